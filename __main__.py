@@ -1,0 +1,4 @@
+"""`python -m bcc` is the `bcc` command."""
+from .cli import main
+
+main()

@@ -1,0 +1,182 @@
+"""Compile a dungeon (and its domain) into a `Model`: load -> ground -> lay out -> emit.
+
+    model = compile_dungeon("bridge")                 # a shipped name or a path
+    model = compile_dungeon("four_rooms", goal="agentInRoom(agent, red)")
+"""
+from __future__ import annotations
+
+import itertools
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import BccError
+from ..model import Grid, Model, Variable
+from . import ir
+from .abstract import Abstract, maybe_true, written_cell_values
+from .domain import Expr, load_domain
+from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
+from .emit import Emitter, GroundAction
+from .ground import Ctx, Grounder
+from .layout import make_layout
+from .parse import parse_expression
+from .source import Origin
+
+__all__ = ["compile_dungeon", "load_dungeon", "load_domain", "shipped_dungeons", "resolve_dungeon_path"]
+
+
+def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
+    dungeon = load_dungeon(ref)
+    goal_src = _goal(dungeon, goal)
+    # Pass 1 finds which attributes and grid layers actions change; pass 2 folds the rest.
+    discovery = Grounder(dungeon, None)
+    _ground_actions(discovery, dungeon)
+    dynamic = {w for w in discovery.writes if w[0] != "<grid>"}
+    g = Grounder(dungeon, dynamic)
+    actions = _ground_actions(g, dungeon)
+    grid_ys = [y for kind, y in g.writes if kind == "<grid>"]
+    layers = None if any(not isinstance(y, ir.Const) for y in grid_ys) else \
+        {int(y.value) for y in grid_ys if 0 <= y.value < dungeon.height}
+    goal_ir = g.bool_expr(goal_src.node, Ctx(goal_src))
+    dom = dungeon.domain
+    failure_ir = g.bool_expr(dom.failure.node, Ctx(dom.failure)) if dom.failure else ir.FALSE
+    layout = make_layout(g, dungeon, dynamic, layers)
+    initial = layout.initial(g, dungeon)
+    ns, source = Emitter(layout, {n: len(e.values) for n, e in dom.enums.items()}).build(actions, goal_ir, failure_ir)
+
+    venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
+    grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
+                layout.static_grid, tuple(venum.values), layout.grid_default)
+    variables = tuple(Variable(s.var.label, s.index, s.lo, s.var.type,
+                               tuple(dom.enums[s.var.type].values) if s.var.type in dom.enums else ())
+                      for s in layout.slots)
+    position, static_pos = _position(g, dungeon, layout)
+    goal_positions = _goal_positions(g, dungeon, layout, actions, goal_ir, position, static_pos, len(venum.values))
+    report = {
+        "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
+        "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
+                    for c, cd in dom.classes.items()},
+        "objects": {c: (g.by_class[c] if not cd.key else
+                        (f"{dungeon.width * dungeon.height * dungeon.depth} cells" if c == dungeon.grid_class
+                         else f"{len(g.keys_of(c))} keyed objects"))
+                    for c, cd in dom.classes.items()},
+        "functions": {f: [f"{p.name}: {p.type}" for p in fd.params] for f, fd in dom.functions.items()},
+        "action_schemas": {a: [f"{p.name}: {p.type}" for p in ad.params] for a, ad in dom.actions.items()},
+        "grounded_actions": len(actions),
+        "state_variables": len(layout.slots),
+        "mutable_cells": len(layout.layers) * dungeon.width * dungeon.depth,
+        "mutable_layers": list(layout.layers),
+        "state_bytes": layout.size,
+        "goal": goal_src.text,
+        "goal_positions": None if goal_positions is None else len(goal_positions),
+    }
+    return Model(
+        name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,
+        action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
+        initial=initial, successors=ns["successors"],
+        apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
+        why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
+        pre_texts=tuple(tuple(a.pre_text) for a in actions),
+        is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
+        position=position, position_static=static_pos, goal_positions=goal_positions,
+        report=report, source=source)
+
+
+def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
+    if goal is not None:
+        where = Origin("--goal", 1, 1)
+        return Expr(parse_expression(goal, where), where, goal)
+    if dungeon.goal is None:
+        raise BccError("the dungeon has no `goal`; add one or pass --goal EXPRESSION", dungeon.path)
+    return dungeon.goal
+
+
+def _grid_value_attr(d: Dungeon) -> str:
+    cdef = d.domain.classes[d.grid_class]
+    return next(a for a in cdef.attrs if a not in cdef.key)
+
+
+def _ground_actions(g: Grounder, d: Dungeon) -> list[GroundAction]:
+    out = []
+    for schema in d.domain.actions.values():
+        choices = []
+        for p in schema.params:
+            if p.type not in g.by_class or d.domain.classes[p.type].key:
+                raise schema.effects.where.error(
+                    f"action {schema.name}: parameter {p.name!r} must be of a class of named objects, not {p.type!r}")
+            choices.append([(p.name, obj) for obj in g.by_class[p.type]])
+        for combo in itertools.product(*choices):
+            multi = any(len(g.by_class[p.type]) > 1 for p in schema.params)
+            name = f"{schema.name}({', '.join(o for _, o in combo)})" if multi else schema.name
+            out.append(_ground_one(g, schema, name, combo, len(out)))
+    return out
+
+
+def _ground_one(g: Grounder, schema, name: str, combo, number: int) -> GroundAction:
+    from .ground import ObjRef
+    env = {pname: ObjRef(obj, g.d.objects[obj][0]) for pname, obj in combo}
+    lets = []
+    for let_name, src in schema.lets:
+        value = g.expr(src.node, Ctx(src, env))
+        if isinstance(value, (ir.Const, ir.Local)) or not hasattr(value, "type") or not isinstance(value.type, str) \
+                or value.type in g.dom.classes:
+            env[let_name] = value  # constants and object references are substituted, not stored
+            continue
+        loc = ir.Local(f"a{number}_{let_name}", value.type)
+        lets.append((loc, value))
+        env[let_name] = loc
+    pre, texts = [], []
+    for src in schema.pre:
+        cond = g.bool_expr(src.node, Ctx(src, env))
+        if isinstance(cond, ir.Const) and cond.value:
+            continue
+        pre.append(cond)
+        texts.append(" ".join(src.text.split()))
+    effects = g.effects(schema.effects.node, Ctx(schema.effects, env))
+    return GroundAction(name, schema.cost, lets, pre, texts, effects)
+
+
+def _position(g: Grounder, d: Dungeon, layout):
+    """Per axis of the agent's `position`: (state index, low) if it changes, else its value."""
+    cls_name, values = d.objects[d.agent_name]
+    cdef = d.domain.classes[cls_name]
+    dyn, static = [], []
+    for axis in cdef.position:
+        var = ir.StateVar(d.agent_name, cls_name, axis, cdef.attrs[axis].type)
+        slot = layout.by_var.get(var)
+        dyn.append((slot.index, slot.lo) if slot else None)
+        static.append(None if slot else values.get(axis, cdef.attrs[axis].default))
+    return tuple(dyn), tuple(static)
+
+
+def _goal_positions(g, d: Dungeon, layout, actions, goal_ir, position, static_pos, n_values):
+    """Agent positions at which the goal may hold (an over-approximation), for Manhattan."""
+    if not position:
+        return None
+    cls_name = d.objects[d.agent_name][0]
+    cdef = d.domain.classes[cls_name]
+    written = written_cell_values(layout, actions, n_values)
+    area = layout.width * layout.depth
+
+    def cell_values(x, y, z):
+        if not (0 <= x < layout.width and 0 <= z < layout.depth and 0 <= y < layout.height):
+            return frozenset({layout.grid_default})
+        initial = layout.static_grid[y * area + z * layout.width + x]
+        return frozenset({initial} | written) if y in layout.layers else frozenset({initial})
+
+    axes = []
+    for axis, dyn, value in zip(cdef.position, position, static_pos):
+        if dyn is None:
+            axes.append([value])
+        else:
+            slot = layout.slots[dyn[0]]
+            axes.append(list(range(slot.lo, slot.hi + 1)))
+    found = []
+    for point in itertools.product(*axes):
+        fixed = {}
+        for axis, dyn, v in zip(cdef.position, position, point):
+            if dyn is not None:
+                fixed[layout.slots[dyn[0]].var] = v
+        if maybe_true(Abstract(layout, {}, cell_values, fixed=fixed).eval(goal_ir)):
+            found.append(point)
+    return np.array(found, dtype=np.int64).reshape(-1, len(position))

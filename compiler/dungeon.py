@@ -1,0 +1,300 @@
+"""Load a dungeon file (spec section 5) and fill the domain's classes with objects.
+
+The dungeon format is fixed by the spec; which class and attribute each part fills is
+the domain's choice, read from its `dungeon:` section (so a domain with other class
+names still loads spec-format dungeons).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import BccError
+from .domain import Domain, Expr, _expr, load_domain, resolve_domain_path
+from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest
+
+DUNGEONS_DIR = Path(__file__).resolve().parent.parent / "dungeons"
+FACINGS_KEYS = ("facing", "looking", "selected")
+
+
+@dataclass
+class Dungeon:
+    name: str
+    path: str
+    description: str
+    domain: Domain
+    width: int
+    depth: int
+    height: int
+    grid_class: str
+    grid: np.ndarray                               # [y, z, x] dense value indices
+    objects: dict[str, tuple[str, dict]]           # named objects: name -> (class, attribute values)
+    keyed: dict[str, dict[tuple, dict]] = field(default_factory=dict)  # class -> key -> attribute values
+    goal: Expr | None = None
+    agent_name: str = "agent"
+    # (object name or (class, key), attribute) -> (YAML container, key): where a value was given
+    where: dict = field(default_factory=dict)
+
+    @property
+    def sizes(self) -> dict[str, int]:
+        return {"width": self.width, "height": self.height, "depth": self.depth}
+
+
+def shipped_dungeons() -> list[str]:
+    return sorted(p.stem for p in DUNGEONS_DIR.glob("*.yaml"))
+
+
+def resolve_dungeon_path(ref: str | Path) -> Path:
+    """A dungeon is a path, or the name of a shipped one (`bridge`)."""
+    path = Path(ref)
+    if path.is_file():
+        return path
+    for cand in (DUNGEONS_DIR / f"{ref}.yaml", DUNGEONS_DIR / str(ref)):
+        if cand.is_file():
+            return cand
+    raise BccError(f"no dungeon file or shipped dungeon named {str(ref)!r}"
+                   f"{suggest(str(ref), shipped_dungeons())}; shipped: {', '.join(shipped_dungeons())}")
+
+
+def _read_with_extends(path: Path, seen: tuple = ()) -> YMap:
+    """A dungeon may `extends: other` and override top-level keys (e.g. only `goal`)."""
+    data = load_yaml(path)
+    if "extends" not in data:
+        return data
+    ref = data["extends"]
+    base_path = (path.parent / str(ref)) if (path.parent / str(ref)).is_file() else None
+    try:
+        base_path = base_path or resolve_dungeon_path(str(ref))
+    except BccError as exc:
+        raise error_at(data, "extends", exc.message) from None
+    if base_path.resolve() in seen or base_path.resolve() == path.resolve():
+        raise error_at(data, "extends", f"dungeon files extend each other in a cycle ({base_path.name})")
+    base = _read_with_extends(base_path, seen + (path.resolve(),))
+    merged = YMap(base)
+    merged.node, merged.src = base.node, base.src
+    merged.nodes = dict(base.nodes)
+    merged.srcs = {k: base.src_of(k) for k in base}
+    for key in data:
+        if key == "extends":
+            continue
+        merged[key] = data[key]
+        merged.nodes[key] = data.nodes[key]
+        merged.srcs[key] = data.src
+    return merged
+
+
+def load_dungeon(ref: str | Path, domain: Domain | None = None) -> Dungeon:
+    path = resolve_dungeon_path(ref)
+    data = _read_with_extends(path)
+    check_keys(data, {"dungeon", "domain", "description", "height", "legend", "map", "agent", "inventory",
+                      "rooms", "goal", "extends"}, {"height", "legend", "map", "agent"}, "a dungeon")
+    if domain is None:
+        dref = data.get("domain", "minecraft")
+        try:
+            dpath = resolve_domain_path(str(dref), data.src_of("domain") and Path(data.src_of("domain").path))
+        except BccError as exc:
+            raise (error_at(data, "domain", exc.message) if "domain" in data else exc) from None
+        domain = load_domain(dpath)
+    return _Builder(domain, data, path).build()
+
+
+class _Builder:
+    def __init__(self, domain: Domain, data: YMap, path: Path):
+        self.domain, self.data, self.path = domain, data, path
+        b = domain.binding
+        for key in ("grid", "agent"):
+            if key not in b:
+                raise error_on(b, f"the domain's `dungeon:` section needs `{key}` to load dungeon files")
+        self.binding = b
+
+    def cls(self, key: str, name) :
+        if name not in self.domain.classes:
+            raise error_at(self.binding, key, f"unknown class {name!r}{suggest(str(name), self.domain.classes)}")
+        return self.domain.classes[name]
+
+    def build(self) -> Dungeon:
+        d, data = self.domain, self.data
+        height = data["height"]
+        if not isinstance(height, int) or isinstance(height, bool) or not 1 <= height <= 255:
+            raise error_at(data, "height", "`height` must be a whole number of layers between 1 and 255")
+        gclass = self.cls("grid", self.binding["grid"])
+        value_attrs = [a for a in gclass.attrs if a not in gclass.key]
+        if len(gclass.key) != 3 or len(value_attrs) != 1:
+            raise error_at(self.binding, "grid", "the grid class needs a key of three attributes [x, y, z] and one other attribute")
+        vtype = gclass.attrs[value_attrs[0]].type
+        if vtype not in d.enums:
+            raise error_at(self.binding, "grid", "the grid class's value attribute must have an enumerated type")
+        self.venum = d.enums[vtype]
+        self.default_index = self.venum.index(gclass.attrs[value_attrs[0]].default)
+        legend = self.legend()
+        rows, map_origin = self.rows(legend)
+        depth, width = len(rows), len(rows[0])
+        grid = np.full((height, depth, width), self.default_index, dtype=np.uint8)
+        for z, row in enumerate(rows):
+            for x, ch in enumerate(row):
+                column = legend[ch]
+                if len(column) > height:
+                    raise error_at(data["legend"], ch, f"the column {ch!r} has {len(column)} blocks but `height` is {height}")
+                grid[:len(column), z, x] = column
+        dungeon = Dungeon(str(data.get("dungeon", self.path.stem)), str(self.path),
+                          str(data.get("description", "")).strip(), d, width, depth, height,
+                          gclass.name, grid, {})
+        self.agent(dungeon, rows, legend, map_origin)
+        self.inventory(dungeon)
+        self.rooms(dungeon)
+        if "goal" in data:
+            dungeon.goal = _expr(data, "goal")
+        return dungeon
+
+    def legend(self) -> dict[str, list[int]]:
+        legend = self.data["legend"]
+        if not isinstance(legend, YMap):
+            raise error_at(self.data, "legend", "`legend` maps one character to a column of block names")
+        out = {}
+        for ch, column in legend.items():
+            if not isinstance(ch, str) or len(ch) != 1:
+                raise error_at(legend, ch, f"a legend key is one character, found {ch!r}", on_key=True)
+            if not isinstance(column, YList):
+                raise error_at(legend, ch, "a legend entry is a list of block names from y = 0 up, e.g. [bedrock]")
+            out[ch] = []
+            for i, name in enumerate(column):
+                if name not in self.venum.values:
+                    raise error_at(column, i, f"unknown block type {name!r}{suggest(str(name), self.venum.values)}")
+                out[ch].append(self.venum.index(name))
+        return out
+
+    def rows(self, legend):
+        text = self.data["map"]
+        if not isinstance(text, str) or not text.strip():
+            raise error_at(self.data, "map", "`map` is a block of text, one row per line (use `map: |`)")
+        where = origin(self.data, "map")
+        lines = text.splitlines()
+        rows = [r.rstrip() for r in lines]
+        while rows and not rows[-1]:
+            rows.pop()
+        width = len(rows[0])
+        for z, row in enumerate(rows):
+            if len(row) != width:
+                raise where.error(f"row {z} has {len(row)} columns but row 0 has {width}; rows must be equally long",
+                                  z + 1, min(len(row), width) + 1)
+            for x, ch in enumerate(row):
+                if ch not in legend:
+                    raise where.error(f"unknown map character {ch!r}: add it to `legend`", z + 1, x + 1)
+        return rows, where
+
+    def agent(self, dungeon: Dungeon, rows, legend, map_origin):
+        data, d = self.data, self.domain
+        agent = data["agent"]
+        if not isinstance(agent, YMap):
+            raise error_at(data, "agent", "`agent` is a mapping with at least `start`")
+        check_keys(agent, {"start", *FACINGS_KEYS}, {"start"}, "the agent")
+        acls = self.cls("agent", self.binding["agent"])
+        if len(acls.position) != 3:
+            raise error_at(self.binding, "agent", f"class {acls.name!r} needs `position: [x, y, z]`")
+        values = {a: adef.default for a, adef in acls.attrs.items()}
+        start = agent["start"]
+        if isinstance(start, str):
+            hits = [(x, z) for z, row in enumerate(rows) for x, ch in enumerate(row) if ch == start]
+            if len(start) != 1 or not hits:
+                raise error_at(agent, "start", f"the start {start!r} is not a character of the map")
+            if len(hits) > 1:
+                (x, z) = hits[1]
+                raise map_origin.error(f"the start character {start!r} appears more than once in the map", z + 1, x + 1)
+            x, z = hits[0]
+            pos = (x, len(legend[start]), z)
+        elif isinstance(start, YList) and len(start) == 3 and all(isinstance(v, int) and not isinstance(v, bool) for v in start):
+            pos = tuple(start)
+        else:
+            raise error_at(agent, "start", "`start` is a map character or [x, y, z]")
+        for axis, value, size in zip(acls.position, pos, (dungeon.width, dungeon.height, dungeon.depth)):
+            if not 0 <= value < size:
+                raise error_at(agent, "start", f"the start {list(pos)} is outside the dungeon ({dungeon.width}x{dungeon.height}x{dungeon.depth})")
+            values[axis] = value
+            dungeon.where[(dungeon.agent_name, axis)] = (agent, "start")
+        fields = self.binding.get("agent_fields") or {}
+        for key in FACINGS_KEYS:
+            if key not in agent:
+                continue
+            if key not in fields:
+                raise error_at(agent, key, f"this domain does not say which attribute `{key}` sets", on_key=True)
+            adef = acls.attrs[fields[key]]
+            value = agent[key]
+            if isinstance(value, str):
+                if value not in adef.names:
+                    raise error_at(agent, key, f"unknown {key} {value!r}; one of: {', '.join(adef.names)}")
+                value = adef.names[value]
+            if not isinstance(value, int) or isinstance(value, bool):
+                raise error_at(agent, key, f"`{key}` must be a name or a number")
+            values[adef.name] = value
+            dungeon.where[(dungeon.agent_name, adef.name)] = (agent, key)
+
+        dungeon.objects[dungeon.agent_name] = (acls.name, values)
+
+
+
+    def inventory(self, dungeon: Dungeon):
+        spec = self.binding.get("inventory")
+        items = self.data.get("inventory")
+        if spec is None:
+            if items:
+                raise error_at(self.data, "inventory", "this domain has no inventory")
+            return
+        icls = self.cls("inventory", spec["class"])
+        if len(icls.key) != 1:
+            raise error_at(spec, "class", "the inventory class needs a key of one attribute (the slot)")
+        dungeon.keyed[icls.name] = {}
+        if items is None:
+            return
+        if not isinstance(items, YList):
+            raise error_at(self.data, "inventory", "`inventory` is a list of {item: NAME, count: N}, slot 0 first")
+        item_attr, count_attr = icls.attrs[spec["item"]], icls.attrs[spec["count"]]
+        ienum = self.domain.enums[item_attr.type]
+        for slot, entry in enumerate(items):
+            if not isinstance(entry, YMap):
+                raise error_at(items, slot, "an inventory slot is {item: NAME, count: N}")
+            check_keys(entry, {"item", "count", "slot"}, {"item"}, "an inventory slot")
+            slot = entry.get("slot", slot)
+            if entry["item"] not in ienum.values:
+                raise error_at(entry, "item", f"unknown item {entry['item']!r}{suggest(str(entry['item']), ienum.values)}")
+            count = entry.get("count", 1)
+            if not isinstance(count, int) or isinstance(count, bool) or count < 0:
+                raise error_at(entry, "count", "`count` must be a whole number >= 0")
+            if (slot,) in dungeon.keyed[icls.name]:
+                raise error_at(entry, "slot" if "slot" in entry else "item", f"slot {slot} is filled twice")
+            dungeon.keyed[icls.name][(slot,)] = {item_attr.name: entry["item"], count_attr.name: count}
+            dungeon.where[((icls.name, (slot,)), count_attr.name)] = (entry, "count" if "count" in entry else "item")
+            dungeon.where[((icls.name, (slot,)), "key")] = (entry, "slot" if "slot" in entry else "item")
+
+    def rooms(self, dungeon: Dungeon):
+        spec = self.binding.get("rooms")
+        rooms = self.data.get("rooms")
+        if not rooms:
+            return
+        if spec is None:
+            raise error_at(self.data, "rooms", "this domain has no rooms")
+        if not isinstance(rooms, YList):
+            raise error_at(self.data, "rooms", "`rooms` is a list of {name, color, x: [min, max], z: [min, max]}")
+        rcls = self.cls("rooms", spec["class"])
+        fields = spec["fields"]
+        for i, room in enumerate(rooms):
+            if not isinstance(room, YMap):
+                raise error_at(rooms, i, "a room is {name, color, x: [min, max], z: [min, max]}")
+            check_keys(room, {"name", *fields}, {"name", *fields}, "a room")
+            name = room["name"]
+            if not isinstance(name, str) or name in dungeon.objects:
+                raise error_at(room, "name", f"room name {name!r} must be a new name")
+            values = {a: adef.default for a, adef in rcls.attrs.items()}
+            for key, attrs in fields.items():
+                value = room[key]
+                if isinstance(attrs, list):
+                    if not isinstance(value, list) or len(value) != len(attrs) or not all(isinstance(v, int) for v in value):
+                        raise error_at(room, key, f"`{key}` is a list of {len(attrs)} numbers")
+                    values.update(zip(attrs, value))
+                else:
+                    atype = rcls.attrs[attrs].type
+                    if atype in self.domain.enums and value not in self.domain.enums[atype].values:
+                        raise error_at(room, key, f"unknown {atype} {value!r}{suggest(str(value), self.domain.enums[atype].values)}")
+                    values[attrs] = value
+            dungeon.objects[name] = (rcls.name, values)

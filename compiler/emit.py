@@ -1,0 +1,327 @@
+"""Compile grounded IR to Python source, then to functions (the hot loop never sees an AST).
+
+For each grounded action: `apply_i(s) -> bytes | None` and `why_i(s) -> int | None` (the
+index of the first failing precondition, for `bcc validate`). One `successors(s)` inlines
+every action, evaluating each `let` only when a precondition first needs it. Also
+`goal(s)` and `failure(s)`. Reads come from the old state `s`, writes go to `n`.
+"""
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+from ..errors import BccError, ModelError
+from . import ir
+from .layout import Layout
+
+
+@dataclass
+class GroundAction:
+    name: str
+    cost: int
+    lets: list          # [(Local, IR)] in order
+    pre: list           # [IR] conjuncts (constant-true ones dropped)
+    pre_text: list      # source text of each conjunct, for explanations
+    effects: tuple      # IR effects
+
+
+def _locals_in(node, acc: set) -> set:
+    if isinstance(node, ir.Local):
+        acc.add(node.name)
+    for child in ir.children(node):
+        _locals_in(child, acc)
+    return acc
+
+
+def _effect_locals(effects, acc: set) -> set:
+    for e in effects:
+        if isinstance(e, ir.When):
+            _locals_in(e.cond, acc)
+            _effect_locals(e.then, acc)
+            _effect_locals(e.orelse, acc)
+        else:
+            for part in vars(e).values():
+                if not isinstance(part, (ir.StateVar, str)):
+                    _locals_in(part, acc)
+    return acc
+
+
+class Emitter:
+    def __init__(self, layout: Layout, enum_sizes: dict):
+        self.L = layout
+        self.enum_sizes = enum_sizes
+        self.ns: dict = {"SG": layout.static_grid, "ModelError": ModelError}
+        self.tables: dict = {}
+        self.tmp = itertools.count()
+        self.area = layout.width * layout.depth
+        self._install_helpers()
+
+    # ---- namespace ---------------------------------------------------------------------
+    def table(self, values: tuple) -> str:
+        if values not in self.tables:
+            name = f"T{len(self.tables)}"
+            self.tables[values] = name
+            self.ns[name] = tuple(int(v) for v in values)
+        return self.tables[values]
+
+    def _install_helpers(self):
+        L, area = self.L, self.area
+        W, D, H, GB, DEF = L.width, L.depth, L.height, L.grid_base, L.grid_default
+        layer_of = {y: i for i, y in enumerate(L.layers)}
+
+        def cell(s, x, y, z):
+            if not (0 <= x < W and 0 <= z < D and 0 <= y < H):
+                return DEF
+            i = layer_of.get(y)
+            if i is None:
+                return L.static_grid[y * area + z * W + x]
+            return s[GB + i * area + z * W + x]
+
+        def set_cell(n, x, y, z, v, action):
+            i = layer_of.get(y)
+            if not (0 <= x < W and 0 <= z < D) or i is None:
+                raise ModelError(f"action {action} changes the cell ({x}, {y}, {z}), which is outside the grid "
+                                 "or in a layer no action was found to change")
+            n[GB + i * area + z * W + x] = v
+
+        def index(i, n, label):
+            if not 0 <= i < n:
+                raise ModelError(f"{label}: index {i} is outside 0..{n - 1}")
+            return i
+
+        def out_of_range(label, v, lo, hi):
+            raise ModelError(f"{label} would become {v}, outside its range [{lo}, {hi}]")
+
+        self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range)
+
+    # ---- expressions -------------------------------------------------------------------
+    def simple(self, node) -> bool:
+        return isinstance(node, (ir.Const, ir.Local, ir.Var))
+
+    def var_range(self, node):
+        if isinstance(node, ir.Const):
+            return node.value, node.value
+        if isinstance(node, ir.Var):
+            slot = self.L.by_var[node.var]
+            return slot.lo, slot.hi
+        return None
+
+    def within(self, node, lo: int, hi: int) -> bool:
+        r = self.interval(node)
+        return r is not None and lo <= r[0] and r[1] <= hi
+
+    def interval(self, node):
+        """Bounds of an integer expression's value, when cheaply known (else None)."""
+        if isinstance(node, (ir.Const, ir.Var)):
+            return self.var_range(node)
+        if node.type == "bool":
+            return 0, 1
+        if node.type in self.enum_sizes:
+            return 0, self.enum_sizes[node.type] - 1
+        if isinstance(node, ir.Lookup):
+            return min(node.table), max(node.table)
+        if isinstance(node, ir.Arith):
+            a, b = self.interval(node.left), self.interval(node.right)
+            if node.op == "%" and isinstance(node.right, ir.Const) and node.right.value > 0:
+                return 0, node.right.value - 1
+            if a is None or b is None:
+                return None
+            if node.op == "+":
+                return a[0] + b[0], a[1] + b[1]
+            if node.op == "-":
+                return a[0] - b[1], a[1] - b[0]
+        return None
+
+    def ex(self, node) -> str:
+        if isinstance(node, ir.Const):
+            return repr(bool(node.value)) if node.type == "bool" else str(int(node.value))
+        if isinstance(node, ir.Local):
+            return f"v_{node.name}"
+        if isinstance(node, ir.Var):
+            slot = self.L.by_var.get(node.var)
+            if slot is None:
+                raise BccError(f"internal: {node.var.label} has no place in the state")
+            return f"s[{slot.index}]" if slot.lo == 0 else f"(s[{slot.index}] + {slot.lo})"
+        if isinstance(node, ir.VarAt):
+            return f"s[{self.keyed_index(node.cls, node.key, node.attr)}]" + self._lo_suffix(node.cls, node.attr)
+        if isinstance(node, ir.Cell):
+            return self.cell(node)
+        if isinstance(node, ir.Lookup):
+            idx = self.ex(node.index)
+            if not self.within(node.index, 0, len(node.table) - 1):
+                idx = f"_index({idx}, {len(node.table)}, {node.label!r})"
+            return f"{self.table(node.table)}[{idx}]"
+        if isinstance(node, ir.Arith):
+            return f"({self.ex(node.left)} {node.op} {self.ex(node.right)})"
+        if isinstance(node, ir.Neg):
+            return f"(-{self.ex(node.operand)})"
+        if isinstance(node, ir.Cmp):
+            parts = [self.ex(node.operands[0])]
+            for op, operand in zip(node.ops, node.operands[1:]):
+                parts += [op, self.ex(operand)]
+            return "(" + " ".join(parts) + ")"
+        if isinstance(node, ir.BoolOp):
+            return "(" + f" {node.op} ".join(self.ex(i) for i in node.items) + ")"
+        if isinstance(node, ir.Not):
+            return f"(not {self.ex(node.operand)})"
+        if isinstance(node, ir.CellLoop):
+            x, y, z = (f"v_{n}" for n in node.names)
+            fn = "any" if node.kind == "exists" else "all"
+            L = self.L
+            return (f"{fn}({self.ex(node.body)} for {y} in range({L.height}) "
+                    f"for {z} in range({L.depth}) for {x} in range({L.width}))")
+        raise BccError(f"internal: cannot compile {type(node).__name__}")
+
+    def _lo_suffix(self, cls, attr) -> str:
+        kb = self.L.keyed[cls]
+        slot = self.L.slots[kb.base + kb.offsets[attr]]
+        return f" + {slot.lo}" if slot.lo else ""
+
+    def keyed_index(self, cls: str, key, attr: str) -> str:
+        kb = self.L.keyed.get(cls)
+        if kb is None:
+            raise BccError(f"internal: class {cls} has no dynamic attributes in the state")
+        k = self.ex(key)
+        rel = k if kb.key_lo == 0 else f"({k} - {kb.key_lo})"
+        if not self.within(key, kb.key_lo, kb.key_lo + kb.count - 1):
+            rel = f"_index({rel}, {kb.count}, {cls + '[]'!r})"
+        return f"{kb.base + kb.offsets[attr]} + {rel} * {kb.stride}"
+
+    def cell(self, node: ir.Cell) -> str:
+        L = self.L
+        if not isinstance(node.y, ir.Const) or not (self.simple(node.x) and self.simple(node.z)):
+            return f"_cell(s, {self.ex(node.x)}, {self.ex(node.y)}, {self.ex(node.z)})"
+        y = node.y.value
+        if not 0 <= y < L.height:
+            return str(L.grid_default)
+        X, Z = self.ex(node.x), self.ex(node.z)
+        layer = L.layer_index(y)
+        if layer is None:
+            base, arr = y * self.area, "SG"
+        else:
+            base, arr = L.grid_base + layer * self.area, "s"
+        checks = []
+        if not self.within(node.x, 0, L.width - 1):
+            checks.append(f"0 <= {X} < {L.width}")
+        if not self.within(node.z, 0, L.depth - 1):
+            checks.append(f"0 <= {Z} < {L.depth}")
+        read = f"{arr}[{base} + {Z} * {L.width} + {X}]"
+        return f"({read} if {' and '.join(checks)} else {L.grid_default})" if checks else read
+
+    # ---- effects -----------------------------------------------------------------------
+    def effects(self, effects, indent: str, action: str) -> list[str]:
+        lines = []
+        for e in effects:
+            if isinstance(e, ir.When):
+                lines.append(f"{indent}if {self.ex(e.cond)}:")
+                lines += self.effects(e.then, indent + "    ", action) or [indent + "    pass"]
+                if e.orelse:
+                    lines.append(f"{indent}else:")
+                    lines += self.effects(e.orelse, indent + "    ", action)
+            elif isinstance(e, ir.SetVar):
+                slot = self.L.by_var[e.var]
+                lines += self.store(f"{slot.index}", e.value, slot.lo, slot.hi, e.var.label, indent)
+            elif isinstance(e, ir.SetVarAt):
+                kb = self.L.keyed[e.cls]
+                slot = self.L.slots[kb.base + kb.offsets[e.attr]]
+                lines += self.store(self.keyed_index(e.cls, e.key, e.attr), e.value, slot.lo, slot.hi,
+                                    f"{e.cls}[].{e.attr}", indent)
+            elif isinstance(e, ir.SetCell):
+                lines += self.store_cell(e, indent, action)
+            else:
+                raise BccError(f"internal: cannot compile effect {type(e).__name__}")
+        return lines
+
+    def store(self, index: str, value, lo: int, hi: int, label: str, indent: str) -> list[str]:
+        if isinstance(value, ir.Const):
+            v = int(value.value)
+            if not lo <= v <= hi:
+                raise BccError(f"an effect sets {label} to {v}, outside its range [{lo}, {hi}]")
+            return [f"{indent}n[{index}] = {v - lo}"]
+        if value.type != "int" or self.within(value, lo, hi):
+            return [f"{indent}n[{index}] = {self.ex(value)}" + (f" - {lo}" if lo else "")]
+        t = f"_t{next(self.tmp)}"
+        return [f"{indent}{t} = {self.ex(value)}",
+                f"{indent}if not {lo} <= {t} <= {hi}: _range({label!r}, {t}, {lo}, {hi})",
+                f"{indent}n[{index}] = {t}" + (f" - {lo}" if lo else "")]
+
+    def store_cell(self, e: ir.SetCell, indent: str, action: str) -> list[str]:
+        L = self.L
+        value = self.ex(e.value)
+        if isinstance(e.y, ir.Const) and L.layer_index(e.y.value) is not None and self.simple(e.x) and self.simple(e.z):
+            X, Z = self.ex(e.x), self.ex(e.z)
+            base = L.grid_base + L.layer_index(e.y.value) * self.area
+            lines = []
+            if not (self.within(e.x, 0, L.width - 1) and self.within(e.z, 0, L.depth - 1)):
+                lines.append(f"{indent}if not (0 <= {X} < {L.width} and 0 <= {Z} < {L.depth}): "
+                             f"_set_cell(n, {X}, {e.y.value}, {Z}, 0, {action!r})")
+            return lines + [f"{indent}n[{base} + {Z} * {L.width} + {X}] = {value}"]
+        return [f"{indent}_set_cell(n, {self.ex(e.x)}, {self.ex(e.y)}, {self.ex(e.z)}, {value}, {action!r})"]
+
+    # ---- whole functions ---------------------------------------------------------------
+    def action_parts(self, a: GroundAction):
+        """Yield ("let", line) / ("pre", expr) in the order they are needed."""
+        defs = {loc.name: (loc, value) for loc, value in a.lets}
+        done: set = set()
+
+        def need(names):
+            for name in sorted(names, key=lambda nm: [l.name for l, _ in a.lets].index(nm) if nm in defs else -1):
+                if name in done or name not in defs:
+                    continue
+                loc, value = defs[name]
+                yield from need(_locals_in(value, set()))
+                done.add(name)
+                yield "let", f"v_{loc.name} = {self.ex(value)}"
+
+        for cond in a.pre:
+            yield from need(_locals_in(cond, set()))
+            yield "pre", self.ex(cond)
+        yield from need(_effect_locals(a.effects, set()))
+
+    def successors_source(self, actions: list[GroundAction]) -> str:
+        lines = ["def successors(s):", "    out = []"]
+        for i, a in enumerate(actions):
+            lines.append(f"    # {a.name}")
+            indent = "    "
+            for kind, text in self.action_parts(a):
+                if kind == "let":
+                    lines.append(indent + text)
+                else:
+                    lines.append(f"{indent}if {text}:")
+                    indent += "    "
+            lines.append(f"{indent}n = bytearray(s)")
+            lines += self.effects(a.effects, indent, a.name)
+            lines.append(f"{indent}out.append(({i}, bytes(n)))")
+        lines.append("    return out")
+        return "\n".join(lines)
+
+    def apply_source(self, i: int, a: GroundAction) -> str:
+        lines = [f"def apply_{i}(s):"]
+        for kind, text in self.action_parts(a):
+            lines.append(f"    {text}" if kind == "let" else f"    if not {text}: return None")
+        lines.append("    n = bytearray(s)")
+        lines += self.effects(a.effects, "    ", a.name)
+        lines.append("    return bytes(n)")
+        lines += [f"def why_{i}(s):"]
+        k = 0
+        for kind, text in self.action_parts(a):
+            if kind == "let":
+                lines.append(f"    {text}")
+            else:
+                lines.append(f"    if not {text}: return {k}")
+                k += 1
+        lines.append("    return None")
+        return "\n".join(lines)
+
+    def predicate_source(self, name: str, node) -> str:
+        return f"def {name}(s):\n    return {self.ex(node)}"
+
+    def build(self, actions: list[GroundAction], goal, failure) -> tuple[dict, str]:
+        parts = [self.successors_source(actions)]
+        parts += [self.apply_source(i, a) for i, a in enumerate(actions)]
+        parts.append(self.predicate_source("goal", goal))
+        parts.append(self.predicate_source("failure", failure))
+        source = "\n\n".join(parts) + "\n"
+        ns = dict(self.ns)
+        exec(compile(source, "<bcc model>", "exec"), ns)
+        return ns, source

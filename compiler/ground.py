@@ -1,0 +1,560 @@
+"""Type-check and ground expressions against a dungeon's objects.
+
+Resolves every name (parameters, lets, constants, objects, enumeration values), inlines
+propositional functions, expands quantifiers over finite classes (a grid quantifier whose
+cell is pinned by `b.x == ...` conjuncts becomes one cell lookup), folds attributes that
+no action changes into constants, and reports each type error at its position.
+"""
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+from ..errors import BccError
+from . import ast, ir
+from .domain import ClassDef, Expr
+from .dungeon import Dungeon
+from .source import suggest
+
+CMP_NUMERIC = {"<", "<=", ">", ">="}
+
+
+@dataclass(frozen=True)
+class ObjRef:
+    """A named object (`agent`, the room `red`)."""
+    name: str
+    cls: str
+
+
+@dataclass(frozen=True)
+class KeyRef:
+    """An object of a keyed class, by key: `block[x, y, z]`, `inventoryBlock[slot]`."""
+    cls: str
+    keys: tuple
+
+
+@dataclass(frozen=True)
+class ClassName:
+    name: str
+
+
+@dataclass(frozen=True)
+class Table:
+    name: str
+    values: tuple
+
+
+class Ctx:
+    """Names in scope, and the text being checked (for error positions)."""
+
+    def __init__(self, src: Expr, env: dict | None = None, stack: tuple = ()):
+        self.src, self.env, self.stack = src, dict(env or {}), stack
+
+    def bind(self, **names) -> "Ctx":
+        return Ctx(self.src, {**self.env, **names}, self.stack)
+
+    def error(self, node, message: str) -> BccError:
+        return self.src.error(message, node)
+
+
+class Grounder:
+    """Grounds one dungeon. `dynamic` is the set of (class, attribute) pairs some action
+    writes; None means "not known yet" (the discovery pass), so nothing is folded."""
+
+    def __init__(self, dungeon: Dungeon, dynamic: set | None):
+        self.d, self.dom, self.dynamic = dungeon, dungeon.domain, dynamic
+        self.sizes = dungeon.sizes
+        self.by_class = {c: [n for n, (oc, _) in dungeon.objects.items() if oc == c] for c in self.dom.classes}
+        self.fresh = itertools.count()
+        self.writes: list = []  # (class, attr) or ("<grid>", y IR), recorded by effects
+        self.key_ranges = {c.name: self._key_ranges(c) for c in self.dom.classes.values() if c.key}
+
+    # ---- helpers ---------------------------------------------------------------------
+    def attr_range(self, cls: ClassDef, attr: str) -> tuple[int, int] | None:
+        adef = cls.attrs[attr]
+        if adef.type == "bool":
+            return (0, 1)
+        if adef.type in self.dom.enums:
+            return (0, len(self.dom.enums[adef.type].values) - 1)
+        if adef.range is None:
+            return None
+        lo, hi = (self.const_int(e) for e in adef.range)
+        if lo > hi:
+            raise adef.range[0].error(f"empty range [{lo}, {hi}] for {cls.name}.{attr}")
+        return lo, hi
+
+    def const_int(self, src: Expr) -> int:
+        value = self.expr(src.node, Ctx(src))
+        if not (isinstance(value, ir.Const) and value.type == "int"):
+            raise src.error("expected a constant integer (numbers, width, height, depth)")
+        return int(value.value)
+
+    def _key_ranges(self, cls: ClassDef):
+        out = []
+        for k in cls.key:
+            r = self.attr_range(cls, k)
+            if r is None or cls.attrs[k].type != "int":
+                raise BccError(f"key attribute {cls.name}.{k} needs an int `range`", self.dom.path)
+            out.append(r)
+        return out
+
+    def keys_of(self, cls: str) -> list[tuple]:
+        return list(itertools.product(*(range(lo, hi + 1) for lo, hi in self.key_ranges[cls])))
+
+    def is_grid(self, cls: str) -> bool:
+        return cls == self.d.grid_class
+
+    def is_dynamic(self, cls: str, attr: str) -> bool:
+        return self.dynamic is None or (cls, attr) in self.dynamic
+
+    def value_const(self, cls: str, attr: str, value) -> ir.Const:
+        atype = self.dom.classes[cls].attrs[attr].type
+        if atype in self.dom.enums:
+            return ir.Const(self.dom.enums[atype].index(value), atype)
+        return ir.Const(value, atype)
+
+    def object_value(self, owner, cls: str, attr: str):
+        """The initial value of an attribute, as given by the dungeon or its default."""
+        cdef = self.dom.classes[cls]
+        if isinstance(owner, tuple):
+            _, key = owner
+            return self.d.keyed.get(cls, {}).get(key, {}).get(attr, cdef.attrs[attr].default)
+        return self.d.objects[owner][1].get(attr, cdef.attrs[attr].default)
+
+    def read(self, owner, cls: str, attr: str):
+        if self.is_dynamic(cls, attr):
+            return ir.Var(ir.StateVar(owner, cls, attr, self.dom.classes[cls].attrs[attr].type))
+        return self.value_const(cls, attr, self.object_value(owner, cls, attr))
+
+    # ---- expressions -----------------------------------------------------------------
+    def bool_expr(self, node, ctx: Ctx):
+        value = self.expr(node, ctx, "bool")
+        self.expect(value, "bool", node, ctx)
+        return value
+
+    def expect(self, value, want: str, node, ctx: Ctx):
+        got = self.type_of(value)
+        if got != want:
+            raise ctx.error(node, f"type error: expected {want}, found {got}")
+
+    def type_of(self, value) -> str:
+        if isinstance(value, (ObjRef, KeyRef)):
+            return value.cls
+        if isinstance(value, ClassName):
+            return f"the class {value.name}"
+        if isinstance(value, Table):
+            return f"the table {value.name}"
+        return value.type
+
+    def expr(self, node, ctx: Ctx, hint: str | None = None):
+        method = getattr(self, "x_" + type(node).__name__)
+        return method(node, ctx, hint)
+
+    def x_Int(self, node, ctx, hint):
+        return ir.Const(node.value, "int")
+
+    def x_Bool(self, node, ctx, hint):
+        return ir.Const(node.value, "bool")
+
+    def x_Name(self, node, ctx, hint):
+        name = node.name
+        enums = self.dom.enums
+        if hint in enums and name in enums[hint].values:
+            return ir.Const(enums[hint].index(name), hint)
+        if hint in self.by_class and name in self.d.objects and self.d.objects[name][0] == hint:
+            return ObjRef(name, hint)
+        if name in ctx.env:
+            return ctx.env[name]
+        if name in self.sizes:
+            return ir.Const(self.sizes[name], "int")
+        if name in self.dom.constants:
+            values = self.dom.constants[name]
+            return ir.Const(values[0], "int") if len(values) == 1 else Table(name, values)
+        if name in self.d.objects:
+            return ObjRef(name, self.d.objects[name][0])
+        owners = [e for e in enums.values() if name in e.values]
+        if len(owners) == 1:
+            return ir.Const(owners[0].index(name), owners[0].name)
+        if len(owners) > 1:
+            raise ctx.error(node, f"{name!r} is a value of several types ({', '.join(e.name for e in owners)}); "
+                                  "compare it with a typed value so bcc knows which")
+        if name in self.dom.classes:
+            return ClassName(name)
+        known = list(ctx.env) + list(self.sizes) + list(self.dom.constants) + list(self.d.objects) + \
+            [v for e in enums.values() for v in e.values] + list(self.dom.classes)
+        raise ctx.error(node, f"unknown name {name!r}{suggest(name, known)}")
+
+    def x_Attr(self, node, ctx, hint):
+        obj = self.expr(node.obj, ctx)
+        if isinstance(obj, (ObjRef, KeyRef)):
+            cdef = self.dom.classes[obj.cls]
+            if node.name not in cdef.attrs:
+                raise ctx.error(node, f"class {obj.cls!r} has no attribute {node.name!r}{suggest(node.name, cdef.attrs)}")
+            return self.attr_of(obj, node.name, node, ctx)
+        otype = self.type_of(obj)
+        if otype in self.dom.enums:
+            enum = self.dom.enums[otype]
+            if node.name not in enum.properties:
+                raise ctx.error(node, f"type {otype!r} has no property {node.name!r}{suggest(node.name, enum.properties)}")
+            table = tuple(enum.properties[node.name])
+            ptype = "bool" if isinstance(table[0], bool) else "int"
+            if isinstance(obj, ir.Const):
+                return ir.Const(table[obj.value], ptype)
+            return ir.Lookup(table, obj, ptype, f"{otype}.{node.name}")
+        raise ctx.error(node, f"type error: {otype} has no attribute {node.name!r}")
+
+    def attr_of(self, obj, attr: str, node, ctx):
+        cls = self.dom.classes[obj.cls]
+        atype = cls.attrs[attr].type
+        if isinstance(obj, ObjRef):
+            return self.read(obj.name, obj.cls, attr)
+        if attr in cls.key:
+            return obj.keys[cls.key.index(attr)]
+        if self.is_grid(obj.cls):
+            return ir.Cell(*obj.keys, atype)
+        if all(isinstance(k, ir.Const) for k in obj.keys):
+            key = tuple(k.value for k in obj.keys)
+            if key not in set(self.keys_of(obj.cls)):
+                raise ctx.error(node, f"{obj.cls}{list(key)} does not exist (keys range over {self.key_ranges[obj.cls]})")
+            return self.read((obj.cls, key), obj.cls, attr)
+        if len(cls.key) != 1:
+            raise ctx.error(node, f"a run-time key into {obj.cls!r} needs a class keyed by one attribute")
+        if self.is_dynamic(obj.cls, attr):
+            return ir.VarAt(obj.cls, obj.keys[0], attr, atype)
+        lo = self.key_ranges[obj.cls][0][0]
+        values = tuple(self.value_const(obj.cls, attr, self.object_value((obj.cls, k), obj.cls, attr)).value
+                       for k in self.keys_of(obj.cls))
+        index = obj.keys[0] if lo == 0 else ir.Arith("-", obj.keys[0], ir.Const(lo, "int"))
+        return ir.Lookup(values, index, atype, f"{obj.cls}[].{attr}")
+
+    def x_Index(self, node, ctx, hint):
+        obj = self.expr(node.obj, ctx)
+        if isinstance(obj, ClassName):
+            cdef = self.dom.classes[obj.name]
+            if not cdef.key:
+                raise ctx.error(node, f"class {obj.name!r} has no `key`, so it cannot be indexed; name its objects instead")
+            if len(node.args) != len(cdef.key):
+                raise ctx.error(node, f"{obj.name}[...] takes {len(cdef.key)} key(s) ({', '.join(cdef.key)}), found {len(node.args)}")
+            keys = []
+            for arg in node.args:
+                k = self.expr(arg, ctx, "int")
+                self.expect(k, "int", arg, ctx)
+                keys.append(k)
+            return KeyRef(obj.name, tuple(keys))
+        if isinstance(obj, Table):
+            if len(node.args) != 1:
+                raise ctx.error(node, f"the table {obj.name!r} takes one index")
+            index = self.expr(node.args[0], ctx, "int")
+            self.expect(index, "int", node.args[0], ctx)
+            if isinstance(index, ir.Const):
+                if not 0 <= index.value < len(obj.values):
+                    raise ctx.error(node, f"index {index.value} is outside the table {obj.name!r} (size {len(obj.values)})")
+                return ir.Const(obj.values[index.value], "int")
+            return ir.Lookup(obj.values, index, "int", obj.name)
+        raise ctx.error(node, f"type error: {self.type_of(obj)} cannot be indexed")
+
+    def x_Call(self, node, ctx, hint):
+        fdef = self.dom.functions.get(node.func)
+        if fdef is None:
+            raise ctx.error(node, f"unknown function {node.func!r}{suggest(node.func, self.dom.functions)}")
+        if node.func in ctx.stack:
+            raise ctx.error(node, f"function {node.func!r} calls itself (functions are expanded inline, so no recursion)")
+        if len(node.args) != len(fdef.params):
+            raise ctx.error(node, f"{node.func} takes {len(fdef.params)} argument(s) "
+                                  f"({', '.join(p.name + ': ' + p.type for p in fdef.params)}), found {len(node.args)}")
+        bound, by_type = {}, []
+        for param, arg in zip(fdef.params, node.args):
+            value = self.expr(arg, ctx, param.type)
+            vtype = self.type_of(value)
+            if vtype != param.type:
+                cdef = self.dom.classes.get(param.type)
+                value_attrs = [a for a in cdef.attrs if a not in cdef.key] if cdef and cdef.key else []
+                if len(value_attrs) == 1 and cdef.attrs[value_attrs[0]].type == vtype:
+                    by_type.append((param, value_attrs[0], value))  # "gold" for a block: some block of type gold
+                    continue
+                raise ctx.error(arg, f"type error: argument {param.name!r} of {node.func} is {param.type}, found {vtype}")
+            bound[param.name] = value
+        if by_type:
+            return self.call_by_type(node, ctx, fdef, bound, by_type)
+        inner = Ctx(fdef.body, bound, ctx.stack + (node.func,))
+        try:
+            return self.bool_or_value(fdef.body.node, inner)
+        except BccError as exc:
+            if exc.path == fdef.body.where.path and ctx.src.where.path != exc.path:
+                exc.message += f" (in {node.func}, called at {ctx.src.where.path}:{ctx.src.where.locate(*node.pos)[0]})"
+            raise
+
+    def bool_or_value(self, node, ctx):
+        return self.expr(node, ctx)
+
+    def call_by_type(self, node, ctx, fdef, bound, by_type):
+        """f(..., gold, ...) where f wants a block: `exists b in block . b.blockType == gold and f(..., b, ...)`."""
+        env = dict(ctx.env)
+        args, conds = [], []
+        by_name = {p.name: (attr, value) for p, attr, value in by_type}
+        for param in fdef.params:
+            fresh = f"__{param.name}{next(self.fresh)}"
+            if param.name in by_name:
+                attr, value = by_name[param.name]
+                tname = fresh + "t"
+                env[tname] = value
+                conds.append((fresh, param.type, attr, tname))
+            else:
+                env[fresh] = bound[param.name]
+            args.append(ast.Name(fresh, node.pos))
+        body: ast.Node = ast.Call(fdef.name, tuple(args), node.pos)
+        for fresh, cls, attr, tname in reversed(conds):
+            test = ast.Compare((ast.Attr(ast.Name(fresh, node.pos), attr, node.pos), ast.Name(tname, node.pos)), ("==",), node.pos)
+            body = ast.Quantifier("exists", fresh, cls, ast.And(test, body, node.pos), node.pos)
+        return self.expr(body, Ctx(ctx.src, env, ctx.stack))
+
+    def x_Neg(self, node, ctx, hint):
+        v = self.expr(node.operand, ctx, "int")
+        self.expect(v, "int", node.operand, ctx)
+        return ir.Const(-v.value, "int") if isinstance(v, ir.Const) else ir.Neg(v)
+
+    def x_BinOp(self, node, ctx, hint):
+        left = self.expr(node.left, ctx, "int")
+        right = self.expr(node.right, ctx, "int")
+        self.expect(left, "int", node.left, ctx)
+        self.expect(right, "int", node.right, ctx)
+        if node.op in ("//", "%") and isinstance(right, ir.Const) and right.value == 0:
+            raise ctx.error(node, "division by zero")
+        if isinstance(left, ir.Const) and isinstance(right, ir.Const):
+            a, b = left.value, right.value
+            return ir.Const({"+": a + b, "-": a - b, "*": a * b, "//": a // b if b else 0, "%": a % b if b else 0}[node.op], "int")
+        if node.op in "+-" and isinstance(right, ir.Const) and right.value == 0:
+            return left
+        return ir.Arith(node.op, left, right)
+
+    def x_Compare(self, node, ctx, hint):
+        values = []
+        first = None
+        for operand in node.operands:
+            v = self.expr(operand, ctx, hint=first)
+            if first is None and self.type_of(v) in self.dom.enums:
+                first = self.type_of(v)
+            values.append(v)
+        if first is not None:  # resolve names like `gold` against the left operand's type
+            values = [self.expr(o, ctx, hint=first) for o in node.operands]
+        for op, (ln, lv), (rn, rv) in zip(node.ops, zip(node.operands, values), zip(node.operands[1:], values[1:])):
+            lt, rt = self.type_of(lv), self.type_of(rv)
+            if isinstance(lv, (ObjRef, KeyRef, ClassName, Table)) or isinstance(rv, (ObjRef, KeyRef, ClassName, Table)):
+                raise ctx.error(node, f"type error: cannot compare {lt} with {rt}; compare their attributes")
+            if op in CMP_NUMERIC and (lt != "int" or rt != "int"):
+                raise ctx.error(node, f"type error: {op!r} needs two ints, found {lt} and {rt}")
+            if lt != rt:
+                raise ctx.error(node, f"type error: cannot compare {lt} with {rt}")
+        if all(isinstance(v, ir.Const) for v in values):
+            ok = all(_cmp(op, a.value, b.value) for op, a, b in zip(node.ops, values, values[1:]))
+            return ir.Const(ok, "bool")
+        return ir.Cmp(tuple(node.ops), tuple(values))
+
+    def x_And(self, node, ctx, hint):
+        return make_bool("and", [self.bool_expr(node.left, ctx), self.bool_expr(node.right, ctx)])
+
+    def x_Or(self, node, ctx, hint):
+        return make_bool("or", [self.bool_expr(node.left, ctx), self.bool_expr(node.right, ctx)])
+
+    def x_Not(self, node, ctx, hint):
+        v = self.bool_expr(node.operand, ctx)
+        return ir.Const(not v.value, "bool") if isinstance(v, ir.Const) else ir.Not(v)
+
+    def x_Quantifier(self, node, ctx, hint):
+        cls = node.cls
+        if cls not in self.dom.classes:
+            raise ctx.error(node, f"unknown class {cls!r}{suggest(cls, self.dom.classes)}")
+        op = "or" if node.kind == "exists" else "and"
+        if self.is_grid(cls):
+            return self.grid_quantifier(node, ctx)
+        items = [self.bool_expr(node.body, ctx.bind(**{node.var: ref})) for ref in self.objects_of(cls)]
+        return make_bool(op, items)
+
+    def objects_of(self, cls: str) -> list:
+        if self.dom.classes[cls].key:
+            return [KeyRef(cls, tuple(ir.Const(k, "int") for k in key)) for key in self.keys_of(cls)]
+        return [ObjRef(name, cls) for name in self.by_class[cls]]
+
+    def grid_quantifier(self, node, ctx):
+        """Over every cell, unless `exists` conjuncts pin each key (`b.x == a.x and ...`):
+        then it is one lookup of that cell, guarded by the key ranges."""
+        cdef = self.dom.classes[node.cls]
+        n = next(self.fresh)
+        names = tuple(f"q{n}_{k}" for k in cdef.key)
+        ref = KeyRef(node.cls, tuple(ir.Local(nm, "int") for nm in names))
+        body = self.bool_expr(node.body, ctx.bind(**{node.var: ref}))
+        if isinstance(body, ir.Const):
+            return body
+        if node.kind == "exists":
+            items = list(body.items) if isinstance(body, ir.BoolOp) and body.op == "and" else [body]
+            pins, rest = {}, []
+            for item in items:
+                pin = _pin(item, names)
+                if pin and pin[0] not in pins:
+                    pins[pin[0]] = pin[1]
+                else:
+                    rest.append(item)
+            if len(pins) == len(names):
+                guards = [self.in_range(pins[nm], lo, hi) for nm, (lo, hi) in zip(names, self.key_ranges[node.cls])]
+                return make_bool("and", guards + [ir.substitute(r, pins) for r in rest])
+        return ir.CellLoop(node.kind, names, body)
+
+    def in_range(self, value, lo: int, hi: int):
+        """`lo <= value <= hi`, folded to true when the value's own range guarantees it."""
+        if isinstance(value, ir.Var):
+            r = self.attr_range(self.dom.classes[value.var.cls], value.var.attr)
+            if r is not None and lo <= r[0] and r[1] <= hi:
+                return ir.TRUE
+        return _in_range(value, lo, hi)
+
+    # ---- effects ---------------------------------------------------------------------
+    def effects(self, nodes, ctx: Ctx) -> tuple:
+        out = []
+        for node in nodes:
+            out.extend(getattr(self, "e_" + type(node).__name__)(node, ctx))
+        return tuple(out)
+
+    def e_Assign(self, node, ctx):
+        target = node.target
+        if not isinstance(target, ast.Attr):
+            raise ctx.error(node, "only attributes can be assigned, e.g. `a.x = tx`")
+        obj = self.expr(target.obj, ctx)
+        if not isinstance(obj, (ObjRef, KeyRef)):
+            raise ctx.error(target, f"type error: {self.type_of(obj)} has no attributes to assign")
+        cdef = self.dom.classes[obj.cls]
+        if target.name not in cdef.attrs:
+            raise ctx.error(target, f"class {obj.cls!r} has no attribute {target.name!r}{suggest(target.name, cdef.attrs)}")
+        if target.name in cdef.key:
+            raise ctx.error(target, f"{target.name!r} is a key of {obj.cls!r}: use `add`/`remove` to move such objects")
+        atype = cdef.attrs[target.name].type
+        value = self.expr(node.value, ctx, atype)
+        if self.type_of(value) != atype:
+            raise ctx.error(node.value, f"type error: {obj.cls}.{target.name} is {atype}, found {self.type_of(value)}")
+        return [self.write(obj, target.name, value, node, ctx)]
+
+    def write(self, obj, attr: str, value, node, ctx):
+        if isinstance(obj, KeyRef) and self.is_grid(obj.cls):
+            self.writes.append(("<grid>", obj.keys[1]))
+            return ir.SetCell(*obj.keys, value)
+        self.writes.append((obj.cls, attr))
+        if isinstance(obj, ObjRef):
+            return ir.SetVar(ir.StateVar(obj.name, obj.cls, attr, value.type), value)
+        if all(isinstance(k, ir.Const) for k in obj.keys):
+            key = tuple(k.value for k in obj.keys)
+            if key not in set(self.keys_of(obj.cls)):
+                raise ctx.error(node, f"{obj.cls}{list(key)} does not exist")
+            return ir.SetVar(ir.StateVar((obj.cls, key), obj.cls, attr, value.type), value)
+        if len(obj.keys) != 1:
+            raise ctx.error(node, f"a run-time key into {obj.cls!r} needs a class keyed by one attribute")
+        return ir.SetVarAt(obj.cls, obj.keys[0], attr, value)
+
+    def e_If(self, node, ctx):
+        orelse = self.effects(node.orelse, ctx)
+        for cond, body in reversed(node.branches):
+            c = self.bool_expr(cond, ctx)
+            orelse = when(c, self.effects(body, ctx), orelse)
+        return list(orelse)
+
+    def e_First(self, node, ctx):
+        self.check_class(node, ctx)
+        if self.is_grid(node.cls):
+            raise ctx.error(node, "`first` over the grid class is not supported; name the cell with block[x, y, z]")
+        orelse = self.effects(node.orelse, ctx)
+        for ref in reversed(self.objects_of(node.cls)):
+            inner = ctx.bind(**{node.var: ref})
+            orelse = when(self.bool_expr(node.cond, inner), self.effects(node.body, inner), orelse)
+        return list(orelse)
+
+    def e_ForEach(self, node, ctx):
+        self.check_class(node, ctx)
+        if self.is_grid(node.cls):
+            raise ctx.error(node, "`forall` effects over the grid class are not supported")
+        out = []
+        for ref in self.objects_of(node.cls):
+            inner = ctx.bind(**{node.var: ref})
+            cond = self.bool_expr(node.cond, inner) if node.cond is not None else ir.TRUE
+            out.extend(when(cond, self.effects(node.body, inner), ()))
+        return out
+
+    def check_class(self, node, ctx):
+        if node.cls not in self.dom.classes:
+            raise ctx.error(node, f"unknown class {node.cls!r}{suggest(node.cls, self.dom.classes)}")
+
+    def keyed_target(self, node, target, ctx) -> KeyRef:
+        obj = self.expr(target, ctx)
+        if not isinstance(obj, KeyRef):
+            raise ctx.error(node, "`add` and `remove` take an object of a keyed class, e.g. block[x, y, z]")
+        return obj
+
+    def e_Add(self, node, ctx):
+        obj = self.keyed_target(node, node.target, ctx)
+        cdef = self.dom.classes[obj.cls]
+        inits = dict(node.inits)
+        for name in inits:
+            if name not in cdef.attrs or name in cdef.key:
+                raise ctx.error(node, f"{obj.cls!r} has no non-key attribute {name!r}{suggest(name, cdef.attrs)}")
+        out = []
+        for attr, adef in cdef.attrs.items():
+            if attr in cdef.key:
+                continue
+            if attr in inits:
+                value = self.expr(inits[attr], ctx, adef.type)
+                if self.type_of(value) != adef.type:
+                    raise ctx.error(inits[attr], f"type error: {obj.cls}.{attr} is {adef.type}, found {self.type_of(value)}")
+            else:
+                value = self.value_const(obj.cls, attr, adef.default)
+            out.append(self.write(obj, attr, value, node, ctx))
+        return out
+
+    def e_Remove(self, node, ctx):
+        obj = self.keyed_target(node, node.target, ctx)
+        cdef = self.dom.classes[obj.cls]
+        return [self.write(obj, attr, self.value_const(obj.cls, attr, adef.default), node, ctx)
+                for attr, adef in cdef.attrs.items() if attr not in cdef.key]
+
+
+def _cmp(op, a, b) -> bool:
+    return {"==": a == b, "!=": a != b, "<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b}[op]
+
+
+def make_bool(op: str, items: list):
+    """and/or with constant folding and flattening."""
+    absorbing = op == "or"  # True absorbs `or`, False absorbs `and`
+    out = []
+    for item in items:
+        if isinstance(item, ir.Const):
+            if bool(item.value) == absorbing:
+                return ir.Const(absorbing, "bool")
+            continue
+        if isinstance(item, ir.BoolOp) and item.op == op:
+            out.extend(item.items)
+        else:
+            out.append(item)
+    if not out:
+        return ir.Const(not absorbing, "bool")
+    return out[0] if len(out) == 1 else ir.BoolOp(op, tuple(out))
+
+
+def when(cond, then: tuple, orelse: tuple) -> tuple:
+    if isinstance(cond, ir.Const):
+        return tuple(then) if cond.value else tuple(orelse)
+    if not then and not orelse:
+        return ()
+    return (ir.When(cond, tuple(then), tuple(orelse)),)
+
+
+def _in_range(value, lo: int, hi: int):
+    if isinstance(value, ir.Const):
+        return ir.Const(lo <= value.value <= hi, "bool")
+    return ir.Cmp(("<=", "<="), (ir.Const(lo, "int"), value, ir.Const(hi, "int")))
+
+
+def _pin(cond, names: tuple):
+    """`q == E` (or `E == q`) for a loop variable q, with E free of loop variables: (q, E)."""
+    if not (isinstance(cond, ir.Cmp) and cond.ops == ("==",)):
+        return None
+    left, right = cond.operands
+    for a, b in ((left, right), (right, left)):
+        if isinstance(a, ir.Local) and a.name in names and not (ir.locals_of(b) & set(names)):
+            return a.name, b
+    return None

@@ -1,0 +1,193 @@
+"""YAML loading that remembers where every value came from.
+
+`load_yaml` returns plain dicts/lists (subclasses `YMap`/`YList`) whose values keep their
+PyYAML nodes, so later stages can report `file:line:col` for any key, value, or a
+character inside an expression or a map. PyYAML marks are 0-based; everything this
+module hands out is 1-based.
+"""
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass
+from pathlib import Path
+
+import yaml
+
+from ..errors import BccError
+
+
+class YMap(dict):
+    """A YAML mapping; `.node` is the mapping node, `.nodes[key]` the (key, value) nodes.
+
+    `.srcs[key]` names the file of a key that came from another file (dungeon `extends`)."""
+    node: yaml.Node
+    nodes: dict
+    src: "SourceFile"
+    srcs: dict
+
+    def src_of(self, key) -> "SourceFile":
+        return getattr(self, "srcs", {}).get(key, self.src)
+
+
+class YList(list):
+    """A YAML sequence; `.node` is the sequence node, `.nodes[i]` the item nodes."""
+    node: yaml.Node
+    nodes: list
+    src: "SourceFile"
+
+
+@dataclass(frozen=True)
+class SourceFile:
+    path: str
+    text: str
+
+    def line_text(self, line: int) -> str:
+        lines = self.text.splitlines()
+        return lines[line - 1] if 0 < line <= len(lines) else ""
+
+
+@dataclass(frozen=True)
+class Origin:
+    """Where an embedded text (an expression, a map) starts in its file.
+
+    `line`/`col` locate its first character; for block scalars (`|`, `>`) each further
+    line starts at column `indent`, for other scalars further lines are approximate."""
+    path: str | None
+    line: int
+    col: int
+    indent: int = 1
+
+    def locate(self, line: int, col: int) -> tuple[int, int]:
+        """File position of (line, col) inside the embedded text (both 1-based)."""
+        if line <= 1:
+            return self.line, self.col + col - 1
+        return self.line + line - 1, self.indent + col - 1
+
+    def error(self, message: str, line: int = 1, col: int = 1) -> BccError:
+        fl, fc = self.locate(line, col)
+        return BccError(message, self.path, fl, fc)
+
+
+def load_yaml(path: str | Path) -> YMap:
+    """Parse one YAML document into YMap/YList with positions; bad YAML is a BccError."""
+    path = str(path)
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise BccError("no such file", path) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise BccError(f"cannot read file: {exc}", path) from None
+    return load_yaml_text(text, path)
+
+
+def load_yaml_text(text: str, path: str) -> YMap:
+    src = SourceFile(path, text)
+    loader = yaml.SafeLoader(text)
+    try:
+        root = loader.get_single_node()
+        if root is None:
+            raise BccError("the file is empty", path, 1, 1)
+        data = _convert(root, loader, src)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        problem = exc.problem or exc.context or "invalid YAML"
+        if "mapping values are not allowed" in problem:
+            problem += " (a ': ' inside a value: quote the value, or write `exists x in C . ...`)"
+        line, col = (mark.line + 1, mark.column + 1) if mark else (None, None)
+        raise BccError(f"invalid YAML: {problem}", path, line, col) from None
+    except yaml.YAMLError as exc:
+        raise BccError(f"invalid YAML: {exc}", path) from None
+    finally:
+        loader.dispose()
+    if not isinstance(data, YMap):
+        raise BccError("expected a mapping of keys at the top level", path, 1, 1)
+    return data
+
+
+def _convert(node: yaml.Node, loader: yaml.SafeLoader, src: SourceFile):
+    if isinstance(node, yaml.MappingNode):
+        out = YMap()
+        out.node, out.nodes, out.src = node, {}, src
+        for key_node, value_node in node.value:
+            if not isinstance(key_node, yaml.ScalarNode) or key_node.tag == "tag:yaml.org,2002:merge":
+                m = key_node.start_mark
+                raise BccError("only plain keys are supported here", src.path, m.line + 1, m.column + 1)
+            key = loader.construct_object(key_node, deep=True)
+            if key in out:
+                m = key_node.start_mark
+                raise BccError(f"duplicate key {key!r}", src.path, m.line + 1, m.column + 1)
+            out[key] = _convert(value_node, loader, src)
+            out.nodes[key] = (key_node, value_node)
+        return out
+    if isinstance(node, yaml.SequenceNode):
+        out = YList(_convert(item, loader, src) for item in node.value)
+        out.node, out.nodes, out.src = node, list(node.value), src
+        return out
+    return loader.construct_object(node, deep=True)
+
+
+# ---- positions -------------------------------------------------------------------
+def node_pos(node: yaml.Node) -> tuple[int, int]:
+    return node.start_mark.line + 1, node.start_mark.column + 1
+
+
+def value_node(container, key) -> yaml.Node:
+    if isinstance(container, YMap):
+        return container.nodes[key][1]
+    return container.nodes[key]
+
+
+def error_at(container, key, message: str, on_key: bool = False) -> BccError:
+    """A BccError pointing at container[key] (its value, or its key with on_key)."""
+    if isinstance(container, YMap) and key in container.nodes:
+        node = container.nodes[key][0 if on_key else 1]
+        return BccError(message, container.src_of(key).path, *node_pos(node))
+    elif isinstance(container, YList) and isinstance(key, int) and key < len(container.nodes):
+        node = container.nodes[key]
+    else:
+        return error_on(container, message)
+    return BccError(message, container.src.path, *node_pos(node))
+
+
+def error_on(container, message: str) -> BccError:
+    """A BccError pointing at a whole mapping or list."""
+    node = getattr(container, "node", None)
+    src = getattr(container, "src", None)
+    if node is None or src is None:
+        return BccError(message)
+    return BccError(message, src.path, *node_pos(node))
+
+
+def origin(container, key) -> Origin:
+    """Where the text of the scalar container[key] starts (for expressions and maps)."""
+    node = value_node(container, key)
+    src = container.src_of(key) if isinstance(container, YMap) else container.src
+    line, col = node_pos(node)
+    style = getattr(node, "style", None)
+    if style in ("|", ">"):
+        lines = src.text.splitlines()
+        first = line  # 0-based index of the first content line = 1-based line of the indicator
+        while first < len(lines) and not lines[first].strip():
+            first += 1
+        indent = len(lines[first]) - len(lines[first].lstrip(" ")) + 1 if first < len(lines) else 1
+        return Origin(src.path, first + 1, indent, indent)
+    if style in ('"', "'"):
+        return Origin(src.path, line, col + 1, 1)
+    return Origin(src.path, line, col, 1)
+
+
+def check_keys(container: YMap, allowed: set[str], required: set[str], what: str) -> None:
+    """Unknown keys (with a did-you-mean) and missing keys are errors with positions."""
+    for key in container:
+        if key not in allowed:
+            close = difflib.get_close_matches(str(key), sorted(allowed), n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            raise error_at(container, key, f"unknown key {key!r} in {what}{hint}", on_key=True)
+    for key in sorted(required):
+        if key not in container:
+            raise error_on(container, f"{what} is missing the key {key!r}")
+
+
+def suggest(name: str, options) -> str:
+    close = difflib.get_close_matches(name, sorted(options), n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""

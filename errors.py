@@ -1,0 +1,36 @@
+"""One error type for every piece of bad input, carrying where in which file it is.
+
+The loader, the parser and the compiler raise `BccError`; the CLI prints it once as
+`file:line:col: message` and exits 2. Positions are 1-based.
+"""
+from __future__ import annotations
+
+
+class BccError(Exception):
+    """Bad input (a dungeon, a domain, a plan, an expression), with its position when known."""
+
+    def __init__(self, message: str, path: str | None = None,
+                 line: int | None = None, col: int | None = None):
+        super().__init__(message)
+        self.message = message
+        self.path = path
+        self.line = line
+        self.col = col
+
+    def at(self, path: str | None, line: int | None, col: int | None) -> "BccError":
+        """Fill in a position the raiser did not know (keeps one it did know)."""
+        if self.path is None:
+            self.path = path
+        if self.line is None:
+            self.line, self.col = line, col
+        return self
+
+    def __str__(self) -> str:
+        where = [str(p) for p in (self.path, self.line, self.col) if p is not None]
+        return ":".join(where + [" " + self.message]) if where else self.message
+
+
+class ModelError(Exception):
+    """A domain bug found while running a compiled model (e.g. a value outside its range).
+
+    Raised from generated code; the CLI reports it like bad input (exit 2)."""
