@@ -16,6 +16,7 @@ class Variable:
     label: str            # e.g. "agent.x", "inventoryBlock[0].count"
     index: int
     lo: int
+    hi: int
     type: str             # "int", "bool" or an enumeration name
     names: tuple = ()     # value names for enumerations
 
@@ -61,6 +62,7 @@ class Model:
     goal_positions: np.ndarray | None          # agent positions where the goal may hold, shape (k, 3)
     report: dict = field(default_factory=dict) # compile statistics for `bcc compile`
     source: str = ""                           # the generated Python, for the curious
+    display: dict = field(default_factory=dict)  # for drawing states (render.py)
 
     def apply(self, action: int, state: bytes) -> bytes | None:
         return self.apply_fns[action](state)
@@ -81,6 +83,13 @@ class Model:
 
     def agent_position(self, state: bytes) -> tuple:
         return tuple(state[p[0]] + p[1] if p is not None else v for p, v in zip(self.position, self.position_static))
+
+    def column(self, state: bytes, x: int, z: int) -> tuple:
+        """The cell values of column (x, z) from y = 0 up, without trailing empty cells."""
+        col = [self.grid.cell(state, x, y, z) for y in range(self.grid.height)]
+        while col and col[-1] == self.grid.default:
+            col.pop()
+        return tuple(col)
 
     def decode(self, state: bytes) -> dict:
         """Every dynamic variable by label, enumeration values by name."""

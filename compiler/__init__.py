@@ -47,7 +47,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
     venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
     grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
                 layout.static_grid, tuple(venum.values), layout.grid_default)
-    variables = tuple(Variable(s.var.label, s.index, s.lo, s.var.type,
+    variables = tuple(Variable(s.var.label, s.index, s.lo, s.hi, s.var.type,
                                tuple(dom.enums[s.var.type].values) if s.var.type in dom.enums else ())
                       for s in layout.slots)
     position, static_pos = _position(g, dungeon, layout)
@@ -79,7 +79,28 @@ def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
         position=position, position_static=static_pos, goal_positions=goal_positions,
-        report=report, source=source)
+        report=report, source=source, display=_display(dungeon, layout))
+
+
+def _display(d: Dungeon, layout) -> dict:
+    """What `bcc show` needs to draw a state: legend glyphs and the agent's facing."""
+    legend_src = d.legend_columns
+    start_char = d.start_char
+    glyphs = {}
+    for ch, column in legend_src.items():
+        key = tuple(column)
+        if key not in glyphs or glyphs[key] == start_char:
+            glyphs[key] = ch
+    cls_name = d.objects[d.agent_name][0]
+    facing = None
+    attr = (d.domain.binding.get("agent_fields") or {}).get("facing")
+    if attr:
+        adef = d.domain.classes[cls_name].attrs[attr]
+        slot = layout.by_var.get(ir.StateVar(d.agent_name, cls_name, attr, adef.type))
+        by_value = {v: k for k, v in adef.names.items()}
+        facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
+                  "value": d.objects[d.agent_name][1].get(attr), "names": by_value}
+    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default}
 
 
 def _goal(dungeon: Dungeon, goal: str | None) -> Expr:

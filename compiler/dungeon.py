@@ -36,6 +36,8 @@ class Dungeon:
     agent_name: str = "agent"
     # (object name or (class, key), attribute) -> (YAML container, key): where a value was given
     where: dict = field(default_factory=dict)
+    legend_columns: dict = field(default_factory=dict)  # map character -> column of value indices
+    start_char: str | None = None
 
     @property
     def sizes(self) -> dict[str, int]:
@@ -141,6 +143,7 @@ class _Builder:
         dungeon = Dungeon(str(data.get("dungeon", self.path.stem)), str(self.path),
                           str(data.get("description", "")).strip(), d, width, depth, height,
                           gclass.name, grid, {})
+        dungeon.legend_columns = legend
         self.agent(dungeon, rows, legend, map_origin)
         self.inventory(dungeon)
         self.rooms(dungeon)
@@ -204,6 +207,7 @@ class _Builder:
                 raise map_origin.error(f"the start character {start!r} appears more than once in the map", z + 1, x + 1)
             x, z = hits[0]
             pos = (x, len(legend[start]), z)
+            dungeon.start_char = start
         elif isinstance(start, YList) and len(start) == 3 and all(isinstance(v, int) and not isinstance(v, bool) for v in start):
             pos = tuple(start)
         else:

@@ -1,0 +1,50 @@
+"""Solvers: one module per algorithm, all `solve(model, budget, progress=None, **options)`.
+
+Built-ins are listed here as "module:function" strings and imported only when used;
+installed packages add solvers through the `bcc.solvers` entry-point group. A plugin
+that fails to load is reported by name and never breaks the built-ins.
+"""
+from __future__ import annotations
+
+import importlib
+from importlib.metadata import entry_points
+
+from ..errors import BccError
+from .base import Budget, Result
+
+BUILTIN = {
+    "bfs": ("bcc.solvers.bfs:solve", "breadth-first search (optimal for unit costs)"),
+    "astar": ("bcc.solvers.astar:solve", "A* with a heuristic (--heuristic, default manhattan; optimal)"),
+}
+
+__all__ = ["Budget", "Result", "get_solver", "list_solvers"]
+
+
+def _plugins() -> dict:
+    try:
+        return {ep.name: ep for ep in entry_points(group="bcc.solvers")}
+    except Exception:  # noqa: BLE001 - a broken installation must not break the built-ins
+        return {}
+
+
+def list_solvers() -> dict[str, str]:
+    out = {name: doc for name, (_, doc) in BUILTIN.items()}
+    for name, ep in _plugins().items():
+        out.setdefault(name, f"plugin from {ep.value}")
+    return out
+
+
+def get_solver(name: str):
+    if name in BUILTIN:
+        module, func = BUILTIN[name][0].split(":")
+        return getattr(importlib.import_module(module), func)
+    plugins = _plugins()
+    if name in plugins:
+        try:
+            return plugins[name].load()
+        except Exception as exc:  # noqa: BLE001
+            raise BccError(f"the solver plugin {name!r} ({plugins[name].value}) failed to load: {exc}") from None
+    import difflib
+    close = difflib.get_close_matches(name, list(list_solvers()), n=1)
+    hint = f" (did you mean {close[0]!r}?)" if close else ""
+    raise BccError(f"unknown solver {name!r}{hint}; available: {', '.join(list_solvers())}")

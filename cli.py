@@ -1,0 +1,260 @@
+"""The `bcc` command: translates between the shell and the library, nothing more.
+
+Exit codes: 0 success, 1 no solution / budget exhausted / plan invalid, 2 bad input.
+Results and JSON go to stdout; errors, warnings and progress to stderr.
+"""
+from __future__ import annotations
+
+import json
+import os
+import sys
+
+import click
+
+from . import __version__
+from .errors import BccError, ModelError
+
+EXIT_OK, EXIT_NO_SOLUTION, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+
+
+class BccGroup(click.Group):
+    """Prints a BccError once, as `file:line:col: message`, and exits 2."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except BccError as exc:
+            click.echo(str(exc), err=True)
+            ctx.exit(EXIT_BAD_INPUT)
+        except ModelError as exc:
+            click.echo(f"domain error: {exc}", err=True)
+            ctx.exit(EXIT_BAD_INPUT)
+        except KeyboardInterrupt:
+            click.echo("interrupted", err=True)
+            ctx.exit(130)
+        except (click.exceptions.Exit, click.ClickException, click.Abort):
+            raise
+        except Exception as exc:  # noqa: BLE001 - a bug in bcc: one line, unless debugging
+            if os.environ.get("BCC_DEBUG"):
+                raise
+            click.echo(f"bcc: internal error: {type(exc).__name__}: {exc} (set BCC_DEBUG=1 for a traceback)", err=True)
+            ctx.exit(EXIT_INTERNAL)
+
+
+def _emit_json(data) -> None:
+    click.echo(json.dumps(data, indent=2, default=str))
+
+
+def _compile(dungeon: str, goal: str | None):
+    from .compiler import compile_dungeon
+    return compile_dungeon(dungeon, goal=goal)
+
+
+def _write(path: str, text: str) -> None:
+    from .atomic import write_text
+    write_text(path, text)
+
+
+goal_option = click.option("--goal", metavar="EXPR", help="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)'.")
+json_option = click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
+
+
+@click.group(cls=BccGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="bcc")
+def main():
+    """bcc compiles declarative YAML dungeons into an OO-MDP and solves them.
+
+    \b
+    Examples:
+      bcc solve bridge                  # solve a shipped dungeon with A*
+      bcc solve my.yaml --solver bfs --json
+      bcc validate bridge plan.txt
+      bcc show bridge --plan plan.txt
+    """
+
+
+@main.command("compile")
+@click.argument("dungeon")
+@json_option
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the JSON report to FILE (atomically).")
+@click.option("--emit-python", type=click.Path(dir_okay=False, writable=True), help="Write the generated successor code to FILE.")
+@goal_option
+def compile_cmd(dungeon, as_json, output, emit_python, goal):
+    """Parse, type-check and compile DUNGEON (a file or a shipped name); report the model."""
+    model = _compile(dungeon, goal)
+    report = dict(model.report, action_names=list(model.action_names))
+    if output:
+        _write(output, json.dumps(report, indent=2) + "\n")
+    if emit_python:
+        _write(emit_python, model.source)
+    if as_json:
+        _emit_json(report)
+        return
+    r = report
+    click.echo(f"dungeon {r['dungeon']} (domain {r['domain']}): "
+               f"{r['size']['width']} wide x {r['size']['depth']} deep x {r['size']['height']} high")
+    click.echo("classes:")
+    for c, info in r["classes"].items():
+        key = f" key[{', '.join(info['key'])}]" if info["key"] else ""
+        attrs = ", ".join(f"{a}: {t}" for a, t in info["attributes"].items())
+        objs = r["objects"][c]
+        objs = ", ".join(objs) if isinstance(objs, list) else objs
+        click.echo(f"  {c}{key} ({attrs}) -- objects: {objs or 'none'}")
+    click.echo("propositional functions: " + ", ".join(f"{f}({', '.join(p)})" for f, p in r["functions"].items()))
+    click.echo("action schemas: " + ", ".join(f"{a}({', '.join(p)})" for a, p in r["action_schemas"].items()))
+    click.echo(f"grounded actions: {r['grounded_actions']}")
+    click.echo(f"state variables: {r['state_variables']} (+ {r['mutable_cells']} mutable cells in layers "
+               f"{r['mutable_layers']}; {r['state_bytes']} bytes per state)")
+    click.echo(f"goal: {r['goal']}")
+
+
+def _progress():
+    if not sys.stderr.isatty():
+        return None
+
+    def report(expanded, generated, stored, seconds):
+        click.echo(f"\r  {seconds:7.1f}s  expanded {expanded:>12,}  stored {stored:>12,}", err=True, nl=False)
+    return report
+
+
+@main.command("solve")
+@click.argument("dungeon")
+@click.option("--solver", default="astar", show_default=True, help="Solver name (see `bcc solvers`).")
+@click.option("--heuristic", default=None, help="Heuristic for informed solvers: manhattan (default) or blind.")
+@json_option
+@click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
+@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help="Stop after this many seconds.")
+@click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help="Stop when the process uses this much memory [default: half the RAM].")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE, one action a line (atomically).")
+@goal_option
+def solve_cmd(dungeon, solver, heuristic, as_json, max_states, time_limit, max_memory, output, goal):
+    """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
+    from .solvers import Budget, get_solver
+    from .solvers.heuristics import HEURISTICS
+    model = _compile(dungeon, goal)
+    solve = get_solver(solver)
+    options = {}
+    if heuristic is not None:
+        if heuristic not in HEURISTICS:
+            raise BccError(f"unknown heuristic {heuristic!r}; available: {', '.join(HEURISTICS)}")
+        options["heuristic"] = heuristic
+    default = Budget.default()
+    budget = Budget(max_states=max_states, time_limit=time_limit,
+                    max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
+    progress = _progress()
+    result = solve(model, budget, progress=progress, **options)
+    if progress:
+        click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+    if output and result.solved:
+        _write(output, "".join(a + "\n" for a in result.plan))
+    if as_json:
+        _emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
+    elif result.solved:
+        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {len(result.plan)} steps, "
+                   f"{result.expanded:,} expanded, {result.seconds:.3f} s")
+        for a in result.plan:
+            click.echo(a)
+    else:
+        click.echo(f"not solved: {result.message} ({result.expanded:,} expanded, {result.seconds:.3f} s)")
+    if not result.solved:
+        click.echo(f"{model.path}: {result.message}", err=True)
+    sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
+
+
+def _read_plan_arg(plan: str):
+    from .simulate import read_plan
+    if plan == "-":
+        return read_plan(sys.stdin.read(), "<stdin>"), "<stdin>"
+    try:
+        with open(plan, encoding="utf-8") as f:
+            return read_plan(f.read(), plan), plan
+    except FileNotFoundError:
+        raise BccError("no such plan file", plan) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise BccError(f"cannot read plan: {exc}", plan) from None
+
+
+@main.command("validate")
+@click.argument("dungeon")
+@click.argument("plan")
+@json_option
+@goal_option
+def validate_cmd(dungeon, plan, as_json, goal):
+    """Replay PLAN (a file, one action a line, or - for stdin) in DUNGEON.
+
+    Exit 0 when it reaches the goal, 1 when it does not (saying at which step and why)."""
+    from .simulate import replay
+    model = _compile(dungeon, goal)
+    actions, path = _read_plan_arg(plan)
+    result = replay(model, actions, path)
+    if as_json:
+        _emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
+    else:
+        click.echo(("valid: " if result.valid else "invalid: ") + result.message)
+    sys.exit(EXIT_OK if result.valid else EXIT_NO_SOLUTION)
+
+
+@main.command("show")
+@click.argument("dungeon")
+@click.option("--plan", "plan", help="Replay this plan (file or -) and draw the agent's path.")
+@json_option
+@goal_option
+def show_cmd(dungeon, plan, as_json, goal):
+    """Draw DUNGEON from above (rows are z, columns x), optionally with a plan's path."""
+    from .render import render
+    from .simulate import replay
+    model = _compile(dungeon, goal)
+    state, path, note = model.initial, None, None
+    if plan:
+        actions, ppath = _read_plan_arg(plan)
+        result = replay(model, actions, ppath)
+        path = [model.agent_position(s) for s in result.states]
+        state = result.states[-1]
+        note = ("valid: " if result.valid else "invalid: ") + result.message
+    picture = render(model, state, path)
+    if as_json:
+        _emit_json({"dungeon": model.name, "goal": model.goal_text, "rows": picture.splitlines(),
+                    "agent": list(model.agent_position(state)), "path": [list(p) for p in path or []],
+                    "plan_note": note})
+        return
+    click.echo(f"{model.name}: goal {model.goal_text}")
+    click.echo(picture)
+    if note:
+        click.echo(note)
+
+
+@main.command("list")
+@json_option
+def list_cmd(as_json):
+    """List the shipped dungeons and domains."""
+    from .compiler.domain import DOMAINS_DIR
+    from .compiler.dungeon import DUNGEONS_DIR, shipped_dungeons
+    from .compiler.source import load_yaml
+    dungeons = []
+    for name in shipped_dungeons():
+        data = load_yaml(DUNGEONS_DIR / f"{name}.yaml")
+        dungeons.append({"name": name, "goal": data.get("goal"), "extends": data.get("extends"),
+                         "description": " ".join(str(data.get("description", "")).split())})
+    domains = sorted(p.stem for p in DOMAINS_DIR.glob("*.yaml"))
+    if as_json:
+        _emit_json({"dungeons": dungeons, "domains": domains})
+        return
+    click.echo("dungeons:")
+    for d in dungeons:
+        click.echo(f"  {d['name']:<18} {d['goal'] or '(inherits its goal)'}")
+    click.echo("domains:")
+    for d in domains:
+        click.echo(f"  {d}")
+
+
+@main.command("solvers")
+@json_option
+def solvers_cmd(as_json):
+    """List the available solvers (built-in and plugins)."""
+    from .solvers import list_solvers
+    solvers = list_solvers()
+    if as_json:
+        _emit_json({"solvers": solvers})
+        return
+    for name, doc in solvers.items():
+        click.echo(f"  {name:<8} {doc}")

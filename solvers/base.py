@@ -1,0 +1,128 @@
+"""What every solver shares: budgets, the result record, plan extraction, memory probes.
+
+Every solver is `solve(model, budget, progress=None, **options) -> Result`. Hitting a
+budget ends the run cleanly with `status="budget"` and `budget` naming which one.
+"""
+from __future__ import annotations
+
+import os
+import resource
+import time
+from dataclasses import asdict, dataclass, field
+from typing import Callable
+
+from ..model import Model
+
+CHECK_EVERY = 1024  # expansions between time/memory checks
+
+
+def physical_memory_mb() -> float:
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**20
+    except (ValueError, OSError, AttributeError):
+        return 8192.0
+
+
+def current_rss_mb() -> float:
+    """Resident memory now (Linux /proc), else the peak so far."""
+    try:
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
+    except OSError:
+        return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+@dataclass(frozen=True)
+class Budget:
+    """Limits of one run. max_states counts distinct states stored; None = no limit."""
+    max_states: int | None = None
+    time_limit: float | None = None
+    max_memory_mb: float | None = None
+
+    @staticmethod
+    def default() -> "Budget":
+        # Half the machine: a search must stop cleanly long before the OS kills it.
+        return Budget(max_states=None, time_limit=None, max_memory_mb=physical_memory_mb() * 0.5)
+
+
+@dataclass
+class Result:
+    solver: str
+    solved: bool
+    status: str                    # "solved" | "no_solution" | "budget"
+    plan: list = field(default_factory=list)
+    cost: int | None = None
+    expanded: int = 0
+    generated: int = 0
+    stored: int = 0
+    seconds: float = 0.0
+    peak_mb: float = 0.0
+    budget: str | None = None      # which budget ran out: "max_states" | "time_limit" | "max_memory"
+    message: str = ""
+    heuristic: str | None = None
+    initial_h: float | None = None
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+
+class Meter:
+    """Time, memory and progress bookkeeping for a search loop."""
+
+    def __init__(self, budget: Budget, progress: Callable | None = None):
+        self.budget, self.progress = budget, progress
+        self.start = time.perf_counter()
+        self.base_mb = current_rss_mb()
+        self.peak_mb = self.base_mb
+        self.last_report = self.start
+
+    def elapsed(self) -> float:
+        return time.perf_counter() - self.start
+
+    def check(self, expanded: int, generated: int, stored: int) -> str | None:
+        """Called every CHECK_EVERY expansions: the exhausted budget's name, or None."""
+        b = self.budget
+        if b.max_states is not None and stored > b.max_states:
+            return "max_states"
+        now = time.perf_counter()
+        if b.time_limit is not None and now - self.start > b.time_limit:
+            return "time_limit"
+        mb = current_rss_mb()
+        self.peak_mb = max(self.peak_mb, mb)
+        if b.max_memory_mb is not None and mb > b.max_memory_mb:
+            return "max_memory"
+        if self.progress is not None and now - self.last_report >= 0.5:
+            self.last_report = now
+            self.progress(expanded=expanded, generated=generated, stored=stored, seconds=now - self.start)
+        return None
+
+    def finish(self, result: Result) -> Result:
+        result.seconds = round(self.elapsed(), 6)
+        self.peak_mb = max(self.peak_mb, current_rss_mb())
+        result.peak_mb = round(self.peak_mb, 1)
+        return result
+
+
+BUDGET_WORDS = {
+    "max_states": "the state budget (--max-states)",
+    "time_limit": "the time limit (--time-limit)",
+    "max_memory": "the memory budget (--max-memory)",
+}
+
+
+def budget_result(solver: str, which: str, meter: Meter, expanded: int, generated: int, stored: int) -> Result:
+    return meter.finish(Result(solver, False, "budget", expanded=expanded, generated=generated, stored=stored,
+                               budget=which, message=f"stopped: {BUDGET_WORDS[which]} ran out"))
+
+
+def extract_plan(model: Model, parents: dict, state: bytes) -> tuple[list[str], int]:
+    """Follow parent links (state -> (previous state, action index)) back to the start."""
+    actions = []
+    while True:
+        prev = parents[state]
+        if prev is None:
+            break
+        state, a = prev
+        actions.append(a)
+    actions.reverse()
+    return [model.action_names[a] for a in actions], sum(model.action_costs[a] for a in actions)

@@ -1,0 +1,41 @@
+"""Breadth-first search: optimal when every action costs the same (all cost 1 in Minecraft).
+
+The goal test runs when a state is generated, one layer earlier than at expansion;
+states in which the episode fails (e.g. the agent died) are never expanded.
+"""
+from __future__ import annotations
+
+from collections import deque
+
+from ..model import Model
+from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
+
+
+def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
+    meter = Meter(budget, progress)
+    start = model.initial
+    parents = {start: None}
+    if model.is_goal(start):
+        return meter.finish(Result("bfs", True, "solved", [], 0, 0, 1, 1))
+    successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
+    frontier = deque([start])
+    expanded = generated = 0
+    while frontier:
+        state = frontier.popleft()
+        expanded += 1
+        if expanded % CHECK_EVERY == 0:
+            which = meter.check(expanded, generated, len(parents))
+            if which:
+                return budget_result("bfs", which, meter, expanded, generated, len(parents))
+        for action, nxt in successors(state):
+            generated += 1
+            if nxt in parents:
+                continue
+            parents[nxt] = (state, action)
+            if is_goal(nxt):
+                plan, cost = extract_plan(model, parents, nxt)
+                return meter.finish(Result("bfs", True, "solved", plan, cost, expanded, generated, len(parents)))
+            if not is_failure(nxt):
+                frontier.append(nxt)
+    return meter.finish(Result("bfs", False, "no_solution", expanded=expanded, generated=generated,
+                               stored=len(parents), message="no plan exists: every reachable state was explored"))

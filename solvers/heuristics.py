@@ -1,0 +1,54 @@
+"""Heuristics over a compiled model; each `make(model)` returns h(state) -> number.
+
+`manhattan` is the distance from the agent's position to the nearest position at which
+the goal may hold (found by the compiler's over-approximation, so it never overestimates
+when each action moves the agent at most one cell at cost >= 1, as in the Minecraft domain).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..model import Model
+
+
+def blind(model: Model):
+    return lambda state: 0
+
+
+def manhattan(model: Model):
+    goals = model.goal_positions
+    if goals is None:
+        return blind(model)
+    dyn = [(axis, p) for axis, p in enumerate(model.position) if p is not None]
+    if not dyn:
+        return blind(model)
+    if len(goals) == 0:
+        return lambda state: math.inf  # the goal holds at no position: nothing can reach it
+    # One table over the dynamic axes' ranges: h = table[flattened position].
+    by_index = {v.index: v for v in model.variables}
+    ranges = [(index, lo, by_index[index].hi - lo + 1) for _, (index, lo) in dyn]
+    grids = np.meshgrid(*[np.arange(lo, lo + n) for _, lo, n in ranges], indexing="ij")
+    points = np.stack([g.ravel() for g in grids], axis=1)              # (P, dims)
+    static_cost = np.zeros(len(goals), dtype=np.int64)
+    for axis, value in enumerate(model.position_static):
+        if value is not None:
+            static_cost += np.abs(goals[:, axis] - value)
+    dyn_goals = goals[:, [axis for axis, _ in dyn]]                     # (k, dims)
+    dist = np.abs(points[:, None, :] - dyn_goals[None, :, :]).sum(axis=2) + static_cost[None, :]
+    table = tuple(int(v) for v in dist.min(axis=1))
+    if len(ranges) == 2:
+        (i0, _, _), (i1, _, n1) = ranges  # the common case, without a loop
+        return lambda s: table[s[i0] * n1 + s[i1]]
+    strides = []
+    acc = 1
+    for _, _, n in reversed(ranges):
+        strides.append(acc)
+        acc *= n
+    strides.reverse()
+    idx = [(i, st) for (i, _, _), st in zip(ranges, strides)]
+    return lambda s: table[sum(s[i] * st for i, st in idx)]
+
+
+HEURISTICS = {"manhattan": manhattan, "blind": blind}
