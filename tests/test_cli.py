@@ -1,0 +1,145 @@
+"""End-to-end: the `bcc` command on the shipped dungeons, through click and as a process."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+from click.testing import CliRunner
+
+from bcc.cli import main
+
+from conftest import FOUR_ROOMS_GOALS, REFERENCE
+
+
+def run(*args, input=None):
+    return CliRunner().invoke(main, list(args), input=input, catch_exceptions=False)
+
+
+@pytest.mark.parametrize("name", [d for d in REFERENCE if d != "tough_maze"])
+@pytest.mark.parametrize("solver", ["bfs", "astar"])
+def test_solve_json_then_validate(name, solver, tmp_path):
+    result = run("solve", name, "--solver", solver, "--json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["solved"] is True and data["cost"] == len(data["plan"])
+    for key in ("plan", "cost", "expanded", "seconds", "generated", "peak_mb"):
+        assert key in data
+    plan = tmp_path / "plan.txt"
+    plan.write_text("\n".join(data["plan"]) + "\n")
+    check = run("validate", name, str(plan))
+    assert check.exit_code == 0, check.output
+
+
+@pytest.mark.parametrize("room", FOUR_ROOMS_GOALS)
+def test_four_rooms_goal_override_matches_shipped_goal_files(room):
+    by_flag = json.loads(run("solve", "four_rooms", "--goal", f"agentInRoom(agent, {room})", "--json").stdout)
+    by_file = json.loads(run("solve", "four_rooms" if room == "blue" else f"four_rooms_{room}", "--json").stdout)
+    assert by_flag["solved"] and by_flag["cost"] == by_file["cost"]
+
+
+def test_solve_writes_plan_file_and_validate_reads_stdin(tmp_path):
+    out = tmp_path / "plan.txt"
+    assert run("solve", "bridge", "-o", str(out)).exit_code == 0
+    lines = out.read_text().split()
+    assert len(lines) == 13 and lines[-1] == "move_forward"
+    piped = run("validate", "bridge", "-", input=out.read_text())
+    assert piped.exit_code == 0 and "valid" in piped.stdout
+    as_json = run("validate", "bridge", "-", input=json.dumps({"plan": lines}))
+    assert as_json.exit_code == 0
+
+
+def test_validate_says_which_step_fails_and_why(tmp_path):
+    plan = tmp_path / "plan.txt"
+    plan.write_text("move_forward\nmove_forward\nmove_forward\n")  # from (1,3) north: (1,2), (1,1), then the wall
+    result = run("validate", "bridge", str(plan), "--json")
+    assert result.exit_code == 1
+    data = json.loads(result.stdout)
+    assert data["valid"] is False and data["failed_step"] == 3
+    assert "solid" in data["message"]
+
+
+def test_validate_incomplete_plan_exits_1(tmp_path):
+    plan = tmp_path / "plan.txt"
+    plan.write_text("rotate_left\n")
+    result = run("validate", "bridge", str(plan))
+    assert result.exit_code == 1 and "does not hold" in result.stdout
+
+
+def test_validate_lava_death(tmp_path):
+    # From (1,3) facing north: turn east, walk (2,3), then onto the lava at (3,3): death.
+    plan = tmp_path / "plan.txt"
+    plan.write_text("rotate_right\nmove_forward\nmove_forward\n")
+    result = run("validate", "bridge", str(plan))
+    assert result.exit_code == 1 and "failure" in result.stdout
+
+
+def test_validate_unknown_action_is_bad_input_with_position(tmp_path):
+    plan = tmp_path / "plan.txt"
+    plan.write_text("rotate_left\n  move_forwrd\n")
+    result = run("validate", "bridge", str(plan))
+    assert result.exit_code == 2
+    assert result.stderr.strip() == f"{plan}:2:3: unknown action 'move_forwrd' (did you mean 'move_forward'?)"
+
+
+def test_budget_exhaustion_exits_1_and_names_the_budget():
+    result = run("solve", "tough_maze", "--solver", "bfs", "--max-states", "500", "--json")
+    assert result.exit_code == 1
+    data = json.loads(result.stdout)
+    assert data["solved"] is False and data["budget"] == "max_states"
+    assert "--max-states" in result.stderr
+
+
+def test_tough_maze_astar_solves_optimally():
+    result = run("solve", "tough_maze", "--json")
+    assert result.exit_code == 0
+    assert json.loads(result.stdout)["solved"] is True
+
+
+def test_compile_report_and_atomic_output(tmp_path):
+    out = tmp_path / "report.json"
+    result = run("compile", "bridge", "--json", "-o", str(out))
+    assert result.exit_code == 0
+    report = json.loads(result.stdout)
+    assert report == json.loads(out.read_text())
+    assert report["grounded_actions"] == 8
+    assert set(report["action_schemas"]) == {"move_forward", "rotate_left", "rotate_right", "look_down",
+                                             "look_ahead", "change_item", "destroy_block", "place_block"}
+    assert {"agentOnBlock", "agentInRoom", "blockInRoom", "blockIsType", "agentHasBlock"} <= set(report["functions"])
+    # 6 agent attributes change (x, z, facing, looking, slot, alive) + 9 slots x (type, count).
+    assert report["state_variables"] == 6 + 18
+    assert [p.name for p in tmp_path.iterdir()] == ["report.json"]  # no temp file left behind
+    text = run("compile", "bridge")
+    assert "grounded actions: 8" in text.stdout and "state variables: 24" in text.stdout
+
+
+def test_show_draws_agent_and_path(tmp_path):
+    plan = tmp_path / "plan.txt"
+    plan.write_text("rotate_right\nmove_forward\n")
+    result = run("show", "bridge", "--plan", str(plan), "--json")
+    data = json.loads(result.stdout)
+    assert data["rows"][3] == "#o>L..#"  # visited (1,3), now at (2,3) facing east
+    plain = run("show", "grid")
+    assert "#^..#" in plain.stdout
+
+
+def test_list_and_solvers():
+    data = json.loads(run("list", "--json").stdout)
+    assert set(REFERENCE) <= {d["name"] for d in data["dungeons"]}
+    assert data["domains"] == ["minecraft"]
+    assert {"bfs", "astar"} <= set(json.loads(run("solvers", "--json").stdout)["solvers"])
+
+
+def test_unknown_solver_and_dungeon_are_bad_input():
+    assert run("solve", "bridge", "--solver", "bfz").exit_code == 2
+    result = run("solve", "brigde")
+    assert result.exit_code == 2 and "did you mean 'bridge'" in result.stderr
+
+
+def test_installed_command_runs_as_a_process(tmp_path):
+    # The console script and `python -m bcc` both exist and behave the same.
+    proc = subprocess.run([sys.executable, "-m", "bcc", "solve", "grid", "--json"], capture_output=True, text=True)
+    assert proc.returncode == 0 and json.loads(proc.stdout)["cost"] == 7
+    proc = subprocess.run(["bcc", "solve", "grid", "--goal", "agentOnBlock(agent, lava)"], capture_output=True, text=True)
+    assert proc.returncode == 1 and "Traceback" not in proc.stderr
