@@ -4,7 +4,7 @@ Used to find the goal's possible agent positions (the Manhattan heuristic's targ
 value is a frozenset of possible values, or None for "anything". Mutable grid cells can
 hold their initial value or any value some action may write there; a written value `v`
 counts only if the writing action's preconditions are not definitely false when its
-value expression is pinned to `v` (so a non-placeable type is never placed).
+value expression is pinned to `v` (so a value the preconditions forbid is never written).
 """
 from __future__ import annotations
 

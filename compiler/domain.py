@@ -100,7 +100,7 @@ class Domain:
 
 
 def resolve_domain_path(ref: str, relative_to: Path | None = None) -> Path:
-    """A domain is a shipped name (`minecraft`) or a path (relative to the dungeon file)."""
+    """A domain is a shipped name (a file stem in domains/) or a path (relative to the dungeon file)."""
     candidates = []
     if relative_to is not None:
         candidates.append(relative_to.parent / ref)

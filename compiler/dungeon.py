@@ -49,7 +49,7 @@ def shipped_dungeons() -> list[str]:
 
 
 def resolve_dungeon_path(ref: str | Path) -> Path:
-    """A dungeon is a path, or the name of a shipped one (`bridge`)."""
+    """A dungeon is a path, or the name of a shipped one (a file stem in dungeons/)."""
     path = Path(ref)
     if path.is_file():
         return path
@@ -91,9 +91,9 @@ def load_dungeon(ref: str | Path, domain: Domain | None = None) -> Dungeon:
     path = resolve_dungeon_path(ref)
     data = _read_with_extends(path)
     check_keys(data, {"dungeon", "domain", "description", "height", "legend", "map", "agent", "inventory",
-                      "rooms", "goal", "extends"}, {"height", "legend", "map", "agent"}, "a dungeon")
+                      "rooms", "goal", "extends"}, {"domain", "height", "legend", "map", "agent"}, "a dungeon")
     if domain is None:
-        dref = data.get("domain", "minecraft")
+        dref = data["domain"]
         try:
             dpath = resolve_domain_path(str(dref), data.src_of("domain") and Path(data.src_of("domain").path))
         except BccError as exc:
@@ -160,7 +160,7 @@ class _Builder:
             if not isinstance(ch, str) or len(ch) != 1:
                 raise error_at(legend, ch, f"a legend key is one character, found {ch!r}", on_key=True)
             if not isinstance(column, YList):
-                raise error_at(legend, ch, "a legend entry is a list of block names from y = 0 up, e.g. [bedrock]")
+                raise error_at(legend, ch, "a legend entry is a list of block names from y = 0 up, e.g. [stone, stone]")
             out[ch] = []
             for i, name in enumerate(column):
                 if name not in self.venum.values:

@@ -270,7 +270,7 @@ class Grounder:
                 cdef = self.dom.classes.get(param.type)
                 value_attrs = [a for a in cdef.attrs if a not in cdef.key] if cdef and cdef.key else []
                 if len(value_attrs) == 1 and cdef.attrs[value_attrs[0]].type == vtype:
-                    by_type.append((param, value_attrs[0], value))  # "gold" for a block: some block of type gold
+                    by_type.append((param, value_attrs[0], value))  # a type for a keyed object: some object of that type
                     continue
                 raise ctx.error(arg, f"type error: argument {param.name!r} of {node.func} is {param.type}, found {vtype}")
             bound[param.name] = value
@@ -288,7 +288,8 @@ class Grounder:
         return self.expr(node, ctx)
 
     def call_by_type(self, node, ctx, fdef, bound, by_type):
-        """f(..., gold, ...) where f wants a block: `exists b in block . b.blockType == gold and f(..., b, ...)`."""
+        """f(..., T, ...) where f wants a keyed object and T is a value of its value attribute:
+        `exists b in C . b.value == T and f(..., b, ...)` (a block type means "some block of that type")."""
         env = dict(ctx.env)
         args, conds = [], []
         by_name = {p.name: (attr, value) for p, attr, value in by_type}
@@ -335,7 +336,7 @@ class Grounder:
             if first is None and self.type_of(v) in self.dom.enums:
                 first = self.type_of(v)
             values.append(v)
-        if first is not None:  # resolve names like `gold` against the left operand's type
+        if first is not None:  # resolve bare value names against the left operand's type
             values = [self.expr(o, ctx, hint=first) for o in node.operands]
         for op, (ln, lv), (rn, rv) in zip(node.ops, zip(node.operands, values), zip(node.operands[1:], values[1:])):
             lt, rt = self.type_of(lv), self.type_of(rv)

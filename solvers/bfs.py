@@ -1,4 +1,4 @@
-"""Breadth-first search: optimal when every action costs the same (all cost 1 in Minecraft).
+"""Breadth-first search: optimal when every action costs the same (unit costs).
 
 The goal test runs when a state is generated, one layer earlier than at expansion;
 states in which the episode fails (e.g. the agent died) are never expanded.

@@ -2,7 +2,7 @@
 
 `manhattan` is the distance from the agent's position to the nearest position at which
 the goal may hold (found by the compiler's over-approximation, so it never overestimates
-when each action moves the agent at most one cell at cost >= 1, as in the Minecraft domain).
+when each action moves the agent at most one cell at cost >= 1).
 """
 from __future__ import annotations
 

@@ -1,0 +1,136 @@
+"""The compiler's own contracts: domain independence, state layout, folding, goal positions."""
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from bcc.compiler import compile_dungeon
+from bcc.compiler.dungeon import shipped_dungeons
+
+from conftest import compiled
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_compiler_and_solvers_know_no_minecraft_words():
+    words = re.compile(r"lava|pickaxe|gold|bedrock|burlap|minecraft|agentOnBlock", re.I)
+    for folder in ("compiler", "solvers"):
+        for path in (ROOT / folder).glob("*.py"):
+            for n, line in enumerate(path.read_text().splitlines(), 1):
+                assert not words.search(line), f"{path.name}:{n}: {line.strip()}"
+
+
+@pytest.mark.parametrize("name", shipped_dungeons())
+def test_every_shipped_dungeon_compiles_deterministically(name):
+    a, b = compile_dungeon(name), compile_dungeon(name)
+    assert a.initial == b.initial and a.source == b.source
+    assert not a.is_failure(a.initial)
+    assert len(a.action_names) == 8
+
+
+def test_static_layers_stay_out_of_the_state():
+    m = compiled("bridge")
+    # Actions only add/remove blocks at y = a.y - 1 = 0 and y = a.y = 1 (a.y never changes).
+    assert m.grid.layers == (0, 1)
+    assert len(m.initial) == 24 + 2 * 7 * 7
+    # agent.y is folded into the code as a constant: it is no state variable.
+    assert "agent.y" not in m.decode(m.initial)
+
+
+def test_goal_is_one_lookup_not_a_loop():
+    m = compiled("bridge")
+    goal_src = m.source[m.source.index("def goal"):m.source.index("def failure")]
+    assert "any(" not in goal_src and "for " not in goal_src
+
+
+def test_goal_positions_are_the_gold_cells_only():
+    # Gold is not placeable, so the only cell where agentOnBlock(agent, gold) can hold is
+    # the one gold block at (5, 0, 5), the agent standing on it at y = 1.
+    m = compiled("bridge")
+    assert m.goal_positions.tolist() == [[5, 1, 5]]
+
+
+def test_room_goal_positions_are_strictly_inside():
+    m = compiled("four_rooms", "agentInRoom(agent, orange)")
+    cells = {(x, z) for x, _, z in m.goal_positions.tolist()}
+    assert cells == {(x, z) for x in range(7, 10) for z in range(1, 4)}
+
+
+def test_placeable_blocks_count_as_possible_goal_cells():
+    # A stone can be placed into lava, so agentOnBlock(agent, burlap_stone) may hold on
+    # any lava cell as well as where stones lie.
+    m = compiled("bridge", "agentOnBlock(agent, burlap_stone)")
+    cells = {(x, z) for x, _, z in m.goal_positions.tolist()}
+    assert {(3, z) for z in range(1, 6)} <= cells
+
+
+def test_blockInRoom_and_blockIsType_quantify_over_cells(tmp_path):
+    m = compiled("four_rooms", "blockInRoom(red_wool, red)")
+    assert not m.is_goal(m.initial)  # red wool is the wall, strictly outside the interior
+    m = compiled("bridge", "blockIsType(gold, gold) and agentHasBlock(agent, diamond_pickaxe)")
+    assert m.is_goal(m.initial)
+
+
+def test_emitted_python_can_be_written(tmp_path):
+    out = tmp_path / "model.py"
+    proc = subprocess.run(["bcc", "compile", "grid", "--emit-python", str(out)], capture_output=True, text=True)
+    assert proc.returncode == 0
+    assert "def successors(s):" in out.read_text()
+
+
+def test_new_object_class_in_yaml_only(tmp_path):
+    # A domain that is not Minecraft at all: a token on a line, moved by `step`, must
+    # reach the end. Nothing in bcc is changed for it.
+    (tmp_path / "line.yaml").write_text("""\
+domain: line
+types:
+  tile: {values: [empty, floor, goal]}
+classes:
+  token:
+    position: [x, y, z]
+    attributes:
+      x: {type: int, range: [0, width - 1]}
+      y: {type: int, range: [0, 0]}
+      z: {type: int, range: [0, 0]}
+      steps: {type: int, range: [0, 9]}
+  cell:
+    key: [x, y, z]
+    attributes:
+      x: {type: int, range: [0, width - 1]}
+      y: {type: int, range: [0, height - 1]}
+      z: {type: int, range: [0, depth - 1]}
+      kind: {type: tile, default: empty}
+dungeon:
+  grid: cell
+  agent: token
+functions:
+  atGoal: {params: {t: token}, body: "cell[t.x, 0, t.z].kind == goal"}
+actions:
+  step:
+    params: {t: token}
+    pre: t.x + 1 < width
+    effect: t.x = t.x + 1; t.steps = t.steps + 1
+  jump:
+    params: {t: token}
+    pre: t.x + 2 < width
+    effect: t.x = t.x + 2
+    cost: 3
+""")
+    (tmp_path / "d.yaml").write_text("""\
+domain: line.yaml
+height: 1
+legend: {".": [floor], "G": [goal]}
+map: |
+  .....G
+agent: {start: [0, 0, 0]}
+goal: atGoal(agent)
+""")
+    from bcc.solvers import Budget, get_solver
+    m = compile_dungeon(tmp_path / "d.yaml")
+    assert m.action_names == ("step", "jump")
+    result = get_solver("astar")(m, Budget())
+    # Five cells to go: 5 steps cost 5; any jump costs 3 for 2 cells, so steps are optimal.
+    assert result.cost == 5 and result.plan == ["step"] * 5
