@@ -10,7 +10,7 @@ pose and the nine hotbar slots as `(blockType, count)`.
 """
 from __future__ import annotations
 
-import copy
+import dataclasses
 from dataclasses import dataclass, field
 
 # Section 2: block types. The spec names bedrock, gold, burlap_stone and the wool colours
@@ -40,7 +40,7 @@ class World:
     width: int
     height: int
     depth: int
-    blocks: dict            # (x, y, z) -> block name, for every cell inside the dungeon
+    blocks: tuple           # block names of every cell inside the dungeon, [y][z][x] order
     x: int
     y: int
     z: int
@@ -50,9 +50,19 @@ class World:
     alive: bool = True
     inventory: list = field(default_factory=lambda: [(AIR, 0)] * SLOTS)
 
+    def index(self, x: int, y: int, z: int) -> int:
+        return (y * self.depth + z) * self.width + x
+
     def block(self, x: int, y: int, z: int) -> str:
         """The block in a cell; outside the dungeon there is nothing (air)."""
-        return self.blocks.get((x, y, z), AIR)
+        if 0 <= x < self.width and 0 <= y < self.height and 0 <= z < self.depth:
+            return self.blocks[self.index(x, y, z)]
+        return AIR
+
+    def with_block(self, x: int, y: int, z: int, name: str) -> tuple:
+        cells = list(self.blocks)
+        cells[self.index(x, y, z)] = name
+        return tuple(cells)
 
     def in_bounds(self, x: int, z: int) -> bool:
         return 0 <= x < self.width and 0 <= z < self.depth
@@ -62,11 +72,11 @@ class World:
         return self.x + dx, self.z + dz
 
     def copy(self) -> "World":
-        return copy.deepcopy(self)
+        return dataclasses.replace(self, inventory=list(self.inventory))
 
     def mineable_total(self) -> int:
         """Mineable blocks in the world plus those carried in the inventory."""
-        return (sum(1 for b in self.blocks.values() if b in MINEABLE)
+        return (sum(1 for b in self.blocks if b in MINEABLE)
                 + sum(c for t, c in self.inventory if t in MINEABLE))
 
 
@@ -133,13 +143,14 @@ def destroy_block(w: World) -> World | None:
     if not w.in_bounds(tx, tz) or target not in MINEABLE:
         return None
     n = w.copy()
-    n.blocks[(tx, w.y, tz)] = AIR
+    n.blocks = w.with_block(tx, w.y, tz, AIR)
     inv = list(n.inventory)
     stack = next((i for i, (t, c) in enumerate(inv) if t == target and 0 < c < MAX_STACK), None)
     if stack is not None:
         inv[stack] = (target, inv[stack][1] + 1)
     else:
-        empty = next((i for i, (t, c) in enumerate(inv) if t == AIR and c == 0), None)
+        # A slot holding nothing (count 0) is empty, whatever its type says.
+        empty = next((i for i, (t, c) in enumerate(inv) if c == 0), None)
         if empty is not None:
             inv[empty] = (target, 1)
         # else: no slot takes it; the block is gone all the same
@@ -167,7 +178,7 @@ def place_block(w: World) -> World | None:
     if not (0 <= target[1] < w.height):
         return None
     n = w.copy()
-    n.blocks[target] = kind
+    n.blocks = w.with_block(*target, kind)
     inv = list(n.inventory)
     inv[w.sel] = (kind, count - 1) if count > 1 else (AIR, 0)
     n.inventory = inv
@@ -283,20 +294,20 @@ def world_from_map(text: str, legend: dict, height: int, start: str = "S", facin
     on top of its start column (y = the number of blocks in it)."""
     rows = text.splitlines()
     depth, width = len(rows), len(rows[0])
-    blocks = {}
+    blocks = [AIR] * (width * height * depth)
     start_at = None
     for z, row in enumerate(rows):
         for x, ch in enumerate(row):
             column = legend[ch]
-            for y in range(height):
-                blocks[(x, y, z)] = column[y] if y < len(column) else AIR
+            for y, name in enumerate(column):
+                blocks[(y * depth + z) * width + x] = name
             if ch == start:
                 start_at = (x, len(column), z)
     inv = [(AIR, 0)] * SLOTS
     for slot, (item, count) in enumerate(inventory or [(PICKAXE, 1)]):
         inv[slot] = (item, count)
     x, y, z = start_at
-    return World(width, height, depth, blocks, x, y, z, FACING[facing], LOOKING[looking],
+    return World(width, height, depth, tuple(blocks), x, y, z, FACING[facing], LOOKING[looking],
                  selected, True, inv)
 
 
@@ -309,13 +320,28 @@ def spec_world(name: str) -> World:
 
 # ---------------------------------------------------------------- reading bcc's states
 
-def world_from_model(model, state: bytes) -> World:
-    """Read a compiled model's state through its public API (decode, grid, position)."""
-    d = model.decode(state)
+def model_blocks(model, state: bytes) -> tuple:
+    """Every cell of a compiled state, read one by one with `Grid.cell`, [y][z][x] order."""
     g = model.grid
     names = g.value_names
-    blocks = {(x, y, z): names[g.cell(state, x, y, z)]
-              for x in range(g.width) for y in range(g.height) for z in range(g.depth)}
+    return tuple(names[g.cell(state, x, y, z)]
+                 for y in range(g.height) for z in range(g.depth) for x in range(g.width))
+
+
+def world_from_model(model, state: bytes, cache: dict | None = None) -> World:
+    """Read a compiled model's state through its public API (decode, grid, position).
+
+    Reading every cell is the slow part; with a `cache`, cells are read once per distinct
+    mutable grid (`state[grid.base:]`), since most actions leave the grid alone."""
+    d = model.decode(state)
+    g = model.grid
+    if cache is None:
+        blocks = model_blocks(model, state)
+    else:
+        key = state[g.base:]
+        blocks = cache.get(key)
+        if blocks is None:
+            blocks = cache[key] = model_blocks(model, state)
     x, y, z = model.agent_position(state)
     inv = [(d[f"inventoryBlock[{i}].blockType"], d[f"inventoryBlock[{i}].count"]) for i in range(SLOTS)]
     return World(g.width, g.height, g.depth, blocks, x, y, z,
@@ -332,7 +358,35 @@ def diff(a: World, b: World) -> list[str]:
     for i, (s, t) in enumerate(zip(a.inventory, b.inventory)):
         if s != t:
             out.append(f"inventory[{i}]: {s!r} != {t!r}")
-    for key in sorted(set(a.blocks) | set(b.blocks)):
-        if a.block(*key) != b.block(*key):
-            out.append(f"block{key}: {a.block(*key)!r} != {b.block(*key)!r}")
+    if a.blocks != b.blocks and (a.width, a.height, a.depth) == (b.width, b.height, b.depth):
+        for y in range(a.height):
+            for z in range(a.depth):
+                for x in range(a.width):
+                    if a.block(x, y, z) != b.block(x, y, z):
+                        out.append(f"block({x}, {y}, {z}): {a.block(x, y, z)!r} != {b.block(x, y, z)!r}")
     return out
+
+
+# ---------------------------------------------------------------- section 5, writing
+
+def dungeon_yaml(rows, legend: dict, height: int, *, start: str = "S", facing: str = "north",
+                 looking: str = "ahead", selected: int = 0, inventory=(("diamond_pickaxe", 1),),
+                 goal: str = "agentOnBlock(agent, gold)", name: str = "test") -> str:
+    """A dungeon file in the spec's section-5 format. `rows` is the map (a string or a
+    list of rows); `inventory` lists (item, count) from slot 0, None for an empty slot."""
+    if isinstance(rows, str):
+        rows = rows.strip("\n").splitlines()
+    lines = [f"dungeon: {name}", "domain: minecraft", f"height: {height}", "legend:"]
+    for ch, column in legend.items():
+        lines.append(f'  "{ch}": [{", ".join(column)}]')
+    lines.append("map: |")
+    lines += [f"  {row}" for row in rows]
+    lines += ["agent:", f"  start: {start}", f"  facing: {facing}", f"  looking: {looking}",
+              f"  selected: {selected}", "inventory:"]
+    for entry in inventory:
+        item, count = entry if entry is not None else (AIR, 0)
+        lines.append(f"  - {{item: {item}, count: {count}}}")
+    if not inventory:
+        lines[-1] = "inventory: []"
+    lines.append(f"goal: {goal}")
+    return "\n".join(lines) + "\n"
