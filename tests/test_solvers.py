@@ -97,6 +97,7 @@ def test_memory_budget_stops_cleanly():
 def test_unreachable_goal_is_no_solution(tmp_path):
     # The gold is walled in on every side: BFS explores everything and reports no plan.
     text = """\
+domain: minecraft
 height: 3
 legend:
   "#": [bedrock, bedrock, bedrock]
