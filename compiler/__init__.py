@@ -33,6 +33,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
     _ground_actions(discovery, dungeon)
     dynamic = {w for w in discovery.writes if w[0] != "<grid>"}
     g = Grounder(dungeon, dynamic)
+    _check_keyed_objects(g, dungeon)
     actions = _ground_actions(g, dungeon)
     grid_ys = [y for kind, y in g.writes if kind == "<grid>"]
     layers = None if any(not isinstance(y, ir.Const) for y in grid_ys) else \
@@ -110,6 +111,18 @@ def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
     if dungeon.goal is None:
         raise BccError("the dungeon has no `goal`; add one or pass --goal EXPRESSION", dungeon.path)
     return dungeon.goal
+
+
+def _check_keyed_objects(g: Grounder, d: Dungeon) -> None:
+    """Objects a dungeon gives by key (inventory slots) must exist in their class's key range."""
+    from .source import error_at
+    for cls, objects in d.keyed.items():
+        valid = set(g.keys_of(cls))
+        for key in objects:
+            if key not in valid:
+                where = d.where.get(((cls, key), "key"))
+                message = f"{cls}[{', '.join(map(str, key))}] does not exist: keys range over {g.key_ranges[cls]}"
+                raise error_at(*where, message) if where else BccError(message, d.path)
 
 
 def _grid_value_attr(d: Dungeon) -> str:

@@ -135,8 +135,58 @@ def load_domain(path: str | Path) -> Domain:
     actions = {name: _load_action(data["actions"], name, names_in_use) for name in data["actions"]}
     failure = _expr(data, "failure") if "failure" in data else None
     binding = data.get("dungeon", YMap())
+    _check_binding(data, binding, classes)
     return Domain(str(data["domain"]), str(path), str(data.get("description", "")).strip(), enums,
                   constants, classes, functions, actions, failure, binding, data)
+
+
+def _check_binding(data, b, classes) -> None:
+    """The `dungeon:` section names classes and attributes; check them all here, with positions."""
+    if not isinstance(b, YMap):
+        raise error_at(data, "dungeon", "`dungeon` maps parts of a dungeon file (grid, agent, ...) to classes")
+    check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms"}, set(), "the `dungeon` section")
+
+    def cls(container, key):
+        name = container[key]
+        if name not in classes:
+            raise error_at(container, key, f"unknown class {name!r}{suggest(str(name), classes)}")
+        return classes[name]
+
+    def attr(container, key, cdef):
+        name = container[key]
+        if name not in cdef.attrs:
+            raise error_at(container, key, f"class {cdef.name!r} has no attribute {name!r}{suggest(str(name), cdef.attrs)}")
+
+    for key in ("grid", "agent"):
+        if key in b:
+            cls(b, key)
+    fields = b.get("agent_fields")
+    if fields is not None:
+        if "agent" not in b or not isinstance(fields, YMap):
+            raise error_at(b, "agent_fields", "`agent_fields` maps dungeon keys (facing, looking, selected) to attributes of the agent class")
+        check_keys(fields, {"facing", "looking", "selected"}, set(), "`agent_fields`")
+        for key in fields:
+            attr(fields, key, cls(b, "agent"))
+    for part, keys in (("inventory", ("item", "count")), ("rooms", ("fields",))):
+        spec = b.get(part)
+        if spec is None:
+            continue
+        if not isinstance(spec, YMap):
+            raise error_at(b, part, f"`{part}` needs `class` and {', '.join(keys)}")
+        check_keys(spec, {"class", *keys}, {"class", *keys}, f"`dungeon.{part}`")
+        cdef = cls(spec, "class")
+        if part == "inventory":
+            for key in keys:
+                attr(spec, key, cdef)
+            continue
+        rfields = spec["fields"]
+        if not isinstance(rfields, YMap):
+            raise error_at(spec, "fields", "`fields` maps room keys (x, z, color) to attributes")
+        for key, target in rfields.items():
+            names = target if isinstance(target, list) else [target]
+            for name in names:
+                if name not in cdef.attrs:
+                    raise error_at(rfields, key, f"class {cdef.name!r} has no attribute {name!r}{suggest(str(name), cdef.attrs)}")
 
 
 def _expr(container, key, effects: bool = False) -> Expr:
