@@ -120,14 +120,15 @@ def _progress():
 @main.command("solve")
 @click.argument("dungeon")
 @click.option("--solver", default="astar", show_default=True, help="Solver name (see `bcc solvers`).")
-@click.option("--heuristic", default=None, help="Heuristic for informed solvers: manhattan (default) or blind.")
+@click.option("--heuristic", default=None, help="For informed solvers: auto (default for astar), pdb, manhattan or blind.")
+@click.option("--weight", type=click.FloatRange(min=1), default=None, help="f = g + W h for astar/wastar (W > 1: faster, cost <= W x optimal).")
 @json_option
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
 @click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help="Stop after this many seconds.")
 @click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help="Stop when the process uses this much memory [default: half the RAM].")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE, one action a line (atomically).")
 @goal_option
-def solve_cmd(dungeon, solver, heuristic, as_json, max_states, time_limit, max_memory, output, goal):
+def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, goal):
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
     from .solvers import Budget, get_solver
     from .solvers.heuristics import HEURISTICS
@@ -135,9 +136,15 @@ def solve_cmd(dungeon, solver, heuristic, as_json, max_states, time_limit, max_m
     solve = get_solver(solver)
     options = {}
     if heuristic is not None:
-        if heuristic not in HEURISTICS:
-            raise BccError(f"unknown heuristic {heuristic!r}; available: {', '.join(HEURISTICS)}")
+        if heuristic not in HEURISTICS and heuristic != "auto":
+            raise BccError(f"unknown heuristic {heuristic!r}; available: auto, {', '.join(HEURISTICS)}")
+        if solver == "bfs":
+            raise BccError("bfs uses no heuristic; drop --heuristic or pick an informed solver (astar, ...)")
         options["heuristic"] = heuristic
+    if weight is not None:
+        if solver not in ("astar", "wastar"):
+            raise BccError("--weight applies to astar and wastar only")
+        options["weight"] = weight
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)

@@ -63,6 +63,13 @@ class Model:
     report: dict = field(default_factory=dict) # compile statistics for `bcc compile`
     source: str = ""                           # the generated Python, for the curious
     display: dict = field(default_factory=dict)  # for drawing states (render.py)
+    search_actions: tuple = ()                 # the actions `successors` generates (irrelevant ones pruned)
+    lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
+
+    def data(self, name: str):
+        """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
+        make = self.lazy.get(name)
+        return make() if make else None
 
     def apply(self, action: int, state: bytes) -> bytes | None:
         return self.apply_fns[action](state)

@@ -5,6 +5,7 @@
 """
 from __future__ import annotations
 
+import functools
 import itertools
 from pathlib import Path
 
@@ -13,19 +14,24 @@ import numpy as np
 from ..errors import BccError
 from ..model import Grid, Model, Variable
 from . import ir
-from .abstract import Abstract, maybe_true, written_cell_values
+from . import patterns
+from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
 from .emit import Emitter, GroundAction
 from .ground import Ctx, Grounder
 from .layout import make_layout
 from .parse import parse_expression
+from .reachability import Analysis, reachable
+from .relevance import relevant_actions
 from .source import Origin
 
 __all__ = ["compile_dungeon", "load_dungeon", "load_domain", "shipped_dungeons", "resolve_dungeon_path"]
 
 
-def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
+def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True) -> Model:
+    """Load, check, ground, analyse and emit. With `prune`, `successors` leaves out actions
+    that can never apply or never matter for the goal (relevance.py); `apply` keeps all."""
     dungeon = load_dungeon(ref)
     goal_src = _goal(dungeon, goal)
     # Pass 1 finds which attributes and grid layers actions change; pass 2 folds the rest.
@@ -41,18 +47,35 @@ def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
     goal_ir = g.bool_expr(goal_src.node, Ctx(goal_src))
     dom = dungeon.domain
     failure_ir = g.bool_expr(dom.failure.node, Ctx(dom.failure)) if dom.failure else ir.FALSE
+    venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
+    n_values = len(venum.values)
+
+    # Relaxed reachability refines which layers really change, and which actions can apply.
     layout = make_layout(g, dungeon, dynamic, layers)
     initial = layout.initial(g, dungeon)
-    ns, source = Emitter(layout, {n: len(e.values) for n, e in dom.enums.items()}).build(actions, goal_ir, failure_ir)
+    reach = reachable(layout, actions, {s.var: initial[s.index] + s.lo for s in layout.slots}, n_values)
+    layout = make_layout(g, dungeon, dynamic, {y for y, vals in reach.written.items() if vals})
+    initial = layout.initial(g, dungeon)
+    an = Analysis(layout, n_values)
+    if prune:
+        search = sorted(relevant_actions(actions, sorted(reach.applicable), goal_ir, failure_ir, an))
+    else:
+        search = list(range(len(actions)))
+    ns, source = Emitter(layout, {n: len(e.values) for n, e in dom.enums.items()}).build(
+        actions, goal_ir, failure_ir, search)
 
-    venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
     grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
                 layout.static_grid, tuple(venum.values), layout.grid_default)
     variables = tuple(Variable(s.var.label, s.index, s.lo, s.hi, s.var.type,
                                tuple(dom.enums[s.var.type].values) if s.var.type in dom.enums else ())
                       for s in layout.slots)
-    position, static_pos = _position(g, dungeon, layout)
-    goal_positions = _goal_positions(g, dungeon, layout, actions, goal_ir, position, static_pos, len(venum.values))
+    position, static_pos, position_vars = _position(dungeon, layout)
+    goal_positions = _goal_positions(an, reach, goal_ir, position, static_pos, position_vars, layout)
+
+    @functools.lru_cache(maxsize=1)
+    def pattern_database():
+        return patterns.build(layout, actions, search, goal_ir, reach, n_values, position_vars)
+
     report = {
         "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
         "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
@@ -64,6 +87,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
         "functions": {f: [f"{p.name}: {p.type}" for p in fd.params] for f, fd in dom.functions.items()},
         "action_schemas": {a: [f"{p.name}: {p.type}" for p in ad.params] for a, ad in dom.actions.items()},
         "grounded_actions": len(actions),
+        "never_applicable": [actions[i].name for i in range(len(actions)) if i not in reach.applicable],
+        "pruned_from_search": [actions[i].name for i in range(len(actions)) if i not in search],
         "state_variables": len(layout.slots),
         "mutable_cells": len(layout.layers) * dungeon.width * dungeon.depth,
         "mutable_layers": list(layout.layers),
@@ -80,28 +105,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None) -> Model:
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
         position=position, position_static=static_pos, goal_positions=goal_positions,
-        report=report, source=source, display=_display(dungeon, layout))
-
-
-def _display(d: Dungeon, layout) -> dict:
-    """What `bcc show` needs to draw a state: legend glyphs and the agent's facing."""
-    legend_src = d.legend_columns
-    start_char = d.start_char
-    glyphs = {}
-    for ch, column in legend_src.items():
-        key = tuple(column)
-        if key not in glyphs or glyphs[key] == start_char:
-            glyphs[key] = ch
-    cls_name = d.objects[d.agent_name][0]
-    facing = None
-    attr = (d.domain.binding.get("agent_fields") or {}).get("facing")
-    if attr:
-        adef = d.domain.classes[cls_name].attrs[attr]
-        slot = layout.by_var.get(ir.StateVar(d.agent_name, cls_name, attr, adef.type))
-        by_value = {v: k for k, v in adef.names.items()}
-        facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
-                  "value": d.objects[d.agent_name][1].get(attr), "names": by_value}
-    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default}
+        report=report, source=source, display=_display(dungeon, layout),
+        search_actions=tuple(search), lazy={"pattern_database": pattern_database})
 
 
 def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
@@ -170,47 +175,52 @@ def _ground_one(g: Grounder, schema, name: str, combo, number: int) -> GroundAct
     return GroundAction(name, schema.cost, lets, pre, texts, effects)
 
 
-def _position(g: Grounder, d: Dungeon, layout):
+def _position(d: Dungeon, layout):
     """Per axis of the agent's `position`: (state index, low) if it changes, else its value."""
     cls_name, values = d.objects[d.agent_name]
     cdef = d.domain.classes[cls_name]
-    dyn, static = [], []
+    dyn, static, variables = [], [], []
     for axis in cdef.position:
         var = ir.StateVar(d.agent_name, cls_name, axis, cdef.attrs[axis].type)
         slot = layout.by_var.get(var)
         dyn.append((slot.index, slot.lo) if slot else None)
         static.append(None if slot else values.get(axis, cdef.attrs[axis].default))
-    return tuple(dyn), tuple(static)
+        variables.append(var)
+    return tuple(dyn), tuple(static), variables
 
 
-def _goal_positions(g, d: Dungeon, layout, actions, goal_ir, position, static_pos, n_values):
+def _goal_positions(an: Analysis, reach, goal_ir, position, static_pos, position_vars, layout):
     """Agent positions at which the goal may hold (an over-approximation), for Manhattan."""
     if not position:
         return None
-    cls_name = d.objects[d.agent_name][0]
-    cdef = d.domain.classes[cls_name]
-    written = written_cell_values(layout, actions, n_values)
-    area = layout.width * layout.depth
-
-    def cell_values(x, y, z):
-        if not (0 <= x < layout.width and 0 <= z < layout.depth and 0 <= y < layout.height):
-            return frozenset({layout.grid_default})
-        initial = layout.static_grid[y * area + z * layout.width + x]
-        return frozenset({initial} | written) if y in layout.layers else frozenset({initial})
-
-    axes = []
-    for axis, dyn, value in zip(cdef.position, position, static_pos):
-        if dyn is None:
-            axes.append([value])
-        else:
-            slot = layout.slots[dyn[0]]
-            axes.append(list(range(slot.lo, slot.hi + 1)))
+    cell, layer = an.cells(reach.written)
+    axes = [[value] if dyn is None else list(range(layout.slots[dyn[0]].lo, layout.slots[dyn[0]].hi + 1))
+            for dyn, value in zip(position, static_pos)]
     found = []
     for point in itertools.product(*axes):
-        fixed = {}
-        for axis, dyn, v in zip(cdef.position, position, point):
-            if dyn is not None:
-                fixed[layout.slots[dyn[0]].var] = v
-        if maybe_true(Abstract(layout, {}, cell_values, fixed=fixed).eval(goal_ir)):
+        sets = dict(reach.values)
+        sets.update({var: frozenset({v}) for var, dyn, v in zip(position_vars, position, point) if dyn is not None})
+        if maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal_ir)):
             found.append(point)
     return np.array(found, dtype=np.int64).reshape(-1, len(position))
+
+
+def _display(d: Dungeon, layout) -> dict:
+    """What `bcc show` needs to draw a state: legend glyphs and the agent's facing."""
+    legend_src = d.legend_columns
+    start_char = d.start_char
+    glyphs = {}
+    for ch, column in legend_src.items():
+        key = tuple(column)
+        if key not in glyphs or glyphs[key] == start_char:
+            glyphs[key] = ch
+    cls_name = d.objects[d.agent_name][0]
+    facing = None
+    attr = (d.domain.binding.get("agent_fields") or {}).get("facing")
+    if attr:
+        adef = d.domain.classes[cls_name].attrs[attr]
+        slot = layout.by_var.get(ir.StateVar(d.agent_name, cls_name, attr, adef.type))
+        by_value = {v: k for k, v in adef.names.items()}
+        facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
+                  "value": d.objects[d.agent_name][1].get(attr), "names": by_value}
+    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default}

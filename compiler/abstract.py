@@ -1,10 +1,11 @@
-"""Over-approximate what values expressions can take, without search.
+"""Over-approximate the values expressions can take, without search (abstract interpretation).
 
-Used to find the goal's possible agent positions (the Manhattan heuristic's targets): a
-value is a frozenset of possible values, or None for "anything". Mutable grid cells can
-hold their initial value or any value some action may write there; a written value `v`
-counts only if the writing action's preconditions are not definitely false when its
-value expression is pinned to `v` (so a value the preconditions forbid is never written).
+A value is a frozenset of possible values, or None for "anything". State variables take
+their values from `sets` (a StateVar -> frozenset map; missing = anything); grid cells
+from `cells(x, y, z)` for known coordinates, or `layer(y)` (every value the layer may hold)
+when x or z is unknown. Every operation over-approximates, so "definitely false" results
+are sound facts about all states the sets describe. Used by reachability.py (which
+actions can ever apply), patterns.py (an abstraction heuristic) and the goal positions.
 """
 from __future__ import annotations
 
@@ -13,7 +14,8 @@ import operator
 
 from . import ir
 
-MAX_COMBOS = 4096
+MAX_COMBOS = 256       # beyond this many operand combinations, integers go by intervals
+MAX_SET = 4096
 _OPS = {"+": operator.add, "-": operator.sub, "*": operator.mul,
         "//": lambda a, b: a // b if b else None, "%": lambda a, b: a % b if b else None}
 _CMP = {"==": operator.eq, "!=": operator.ne, "<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}
@@ -21,12 +23,15 @@ UNKNOWN_BOOL = frozenset({False, True})
 
 
 class Abstract:
-    def __init__(self, layout, lets: dict, cell_values, fixed: dict | None = None, pins: dict | None = None):
-        self.L, self.lets, self.cell_values = layout, lets, cell_values
-        self.fixed, self.pins = fixed or {}, pins or {}
+    def __init__(self, lets: dict, cells, layer=None, sets: dict | None = None, pins: dict | None = None,
+                 var_at=None):
+        self.lets, self.cells, self.layer = lets, cells, layer
+        self.sets, self.pins, self.var_at = sets or {}, pins or {}, var_at
+        self.memo: dict = {}
 
     def eval(self, node):
-        if node in self.pins:
+        # Only Locals and Vars are pinned; testing every node would hash whole subtrees.
+        if self.pins and isinstance(node, (ir.Local, ir.Var)) and node in self.pins:
             return self.pins[node]
         m = getattr(self, "e_" + type(node).__name__, None)
         return m(node) if m else None
@@ -36,92 +41,160 @@ class Abstract:
 
     def e_Local(self, node):
         if node.name in self.lets:
-            return self.eval(self.lets[node.name])
+            if node.name not in self.memo:
+                self.memo[node.name] = self.eval(self.lets[node.name])
+            return self.memo[node.name]
         return None
 
     def e_Var(self, node):
-        v = self.fixed.get(node.var)
-        return None if v is None else frozenset({v})
+        return self.sets.get(node.var)
 
-    def e_Cell(self, node):
-        coords = [self.eval(c) for c in (node.x, node.y, node.z)]
-        if any(c is None for c in coords):
+    def e_VarAt(self, node):
+        keys = self.eval(node.key)
+        if keys is None or self.var_at is None:
             return None
         out = set()
-        for x, y, z in itertools.product(*coords):
-            out |= self.cell_values(x, y, z)
+        for k in keys:
+            var = self.var_at(node.cls, k, node.attr)
+            values = self.sets.get(var) if var is not None else None
+            if values is None:
+                return None
+            out |= values
+        return frozenset(out)
+
+    def e_Cell(self, node):
+        xs, ys, zs = (self.eval(c) for c in (node.x, node.y, node.z))
+        if ys is None:
+            return None
+        if xs is None or zs is None or len(xs) * len(zs) > MAX_COMBOS:
+            if self.layer is None:
+                return None
+            out = set()
+            for y in ys:
+                out |= self.layer(y)
+            return frozenset(out)
+        out = set()
+        for x, y, z in itertools.product(xs, ys, zs):
+            out |= self.cells(x, y, z)
         return frozenset(out)
 
     def e_Lookup(self, node):
         idx = self.eval(node.index)
         if idx is None:
-            return frozenset(node.table) if len(set(node.table)) < MAX_COMBOS else None
+            return frozenset(node.table)
         return frozenset(node.table[i] for i in idx if 0 <= i < len(node.table))
 
-    def _combine(self, fn, parts):
+    def _values(self, parts):
         values = [self.eval(p) for p in parts]
         if any(v is None for v in values):
-            return None
-        if eval_size(values) > MAX_COMBOS:
-            return None
-        return frozenset(r for combo in itertools.product(*values) if (r := fn(*combo)) is not None)
+            return None, 0
+        n = 1
+        for v in values:
+            n *= max(1, len(v))
+        return values, n
 
     def e_Arith(self, node):
-        return self._combine(_OPS[node.op], (node.left, node.right))
+        values, n = self._values((node.left, node.right))
+        if values is None:
+            return None
+        if n <= MAX_COMBOS:
+            fn = _OPS[node.op]
+            return frozenset(r for a, b in itertools.product(*values) if (r := fn(a, b)) is not None)
+        (alo, ahi), (blo, bhi) = ((min(v), max(v)) for v in values)
+        if node.op == "+":
+            lo, hi = alo + blo, ahi + bhi
+        elif node.op == "-":
+            lo, hi = alo - bhi, ahi - blo
+        elif node.op == "%" and blo > 0:
+            lo, hi = 0, bhi - 1
+        else:
+            return None
+        return frozenset(range(lo, hi + 1)) if hi - lo < MAX_SET else None
 
     def e_Neg(self, node):
-        return self._combine(operator.neg, (node.operand,))
+        v = self.eval(node.operand)
+        return None if v is None else frozenset(-x for x in v)
 
     def e_Cmp(self, node):
-        def chain(*vals):
-            return all(_CMP[op](a, b) for op, a, b in zip(node.ops, vals, vals[1:]))
-        return self._combine(chain, node.operands)
+        values, n = self._values(node.operands)
+        if values is None:
+            return UNKNOWN_BOOL
+        if n <= MAX_COMBOS:
+            results = set()
+            for combo in itertools.product(*values):
+                results.add(all(_CMP[op](a, b) for op, a, b in zip(node.ops, combo, combo[1:])))
+                if len(results) == 2:
+                    break
+            return frozenset(results)
+        # Intervals: each link is decided only when the bounds settle it.
+        bounds = [(min(v), max(v)) for v in values]
+        decided_true = True
+        for op, (alo, ahi), (blo, bhi) in zip(node.ops, bounds, bounds[1:]):
+            sure, never = _interval_cmp(op, alo, ahi, blo, bhi)
+            if never:
+                return frozenset({False})
+            decided_true &= sure
+        return frozenset({True}) if decided_true else UNKNOWN_BOOL
+
+    def narrow(self, conditions) -> None:
+        """Restrict Locals and Vars by conditions known to hold (`0 <= tx < width`): a
+        non-relational refinement, sound because only values violating a hard condition go."""
+        for cond in _conjuncts(conditions):
+            if not isinstance(cond, ir.Cmp):
+                continue
+            free = [i for i, o in enumerate(cond.operands) if not isinstance(o, ir.Const)]
+            if len(free) != 1 or not isinstance(cond.operands[free[0]], (ir.Local, ir.Var)):
+                continue
+            target = cond.operands[free[0]]
+            values = self.eval(target)
+            if values is None:
+                continue
+            kept = set()
+            for v in values:
+                vals = [o.value if isinstance(o, ir.Const) else v for o in cond.operands]
+                if all(_CMP[op](a, b) for op, a, b in zip(cond.ops, vals, vals[1:])):
+                    kept.add(v)
+            self.pins[target] = frozenset(kept)
+        self.memo.clear()
 
     def e_Not(self, node):
         v = self.eval(node.operand)
         return UNKNOWN_BOOL if v is None else frozenset(not b for b in v)
 
     def e_BoolOp(self, node):
-        values = [self.eval(i) for i in node.items]
         decisive = node.op == "or"
-        if any(v is not None and v == frozenset({decisive}) for v in values):
-            return frozenset({decisive})
-        if all(v is not None and v == frozenset({not decisive}) for v in values):
-            return frozenset({not decisive})
-        return UNKNOWN_BOOL
-
-
-def eval_size(values) -> int:
-    n = 1
-    for v in values:
-        n *= max(1, len(v))
-    return n
+        unknown = False
+        for item in node.items:  # short-circuit like the real thing, and to save work
+            v = self.eval(item)
+            if v is not None and v == frozenset({decisive}):
+                return frozenset({decisive})
+            if v is None or v != frozenset({not decisive}):
+                unknown = True
+        return UNKNOWN_BOOL if unknown else frozenset({not decisive})
 
 
 def maybe_true(value) -> bool:
     return value is None or True in value
 
 
-def written_cell_values(layout, actions, value_count: int) -> set[int]:
-    """Every value some action may write into a grid cell (see the module docstring)."""
-    out: set[int] = set()
-    no_cells = lambda x, y, z: frozenset(range(value_count))  # noqa: E731 - "any value", conservatively
+def _conjuncts(conditions):
+    for c in conditions:
+        if isinstance(c, ir.BoolOp) and c.op == "and":
+            yield from _conjuncts(c.items)
+        else:
+            yield c
 
-    def walk(a, effects, guards):
-        lets = {loc.name: value for loc, value in a.lets}
-        for e in effects:
-            if isinstance(e, ir.When):
-                walk(a, e.then, guards + [e.cond])
-                walk(a, e.orelse, guards + [ir.Not(e.cond)])
-            elif isinstance(e, ir.SetCell):
-                if isinstance(e.value, ir.Const):
-                    out.add(int(e.value.value))
-                    continue
-                for v in range(value_count):
-                    ab = Abstract(layout, lets, no_cells, pins={e.value: frozenset({v})})
-                    if all(maybe_true(ab.eval(c)) for c in list(a.pre) + guards):
-                        out.add(v)
 
-    for a in actions:
-        walk(a, a.effects, [])
-    return out
+def _interval_cmp(op, alo, ahi, blo, bhi) -> tuple[bool, bool]:
+    """(surely true, surely false) for `a op b` with a in [alo, ahi], b in [blo, bhi]."""
+    if op == "<":
+        return ahi < blo, alo >= bhi
+    if op == "<=":
+        return ahi <= blo, alo > bhi
+    if op == ">":
+        return alo > bhi, ahi <= blo
+    if op == ">=":
+        return alo >= bhi, ahi < blo
+    if op == "==":
+        return alo == ahi == blo == bhi, ahi < blo or bhi < alo
+    return ahi < blo or bhi < alo, alo == ahi == blo == bhi  # "!="

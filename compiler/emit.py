@@ -278,9 +278,10 @@ class Emitter:
             yield "pre", self.ex(cond)
         yield from need(_effect_locals(a.effects, set()))
 
-    def successors_source(self, actions: list[GroundAction]) -> str:
+    def successors_source(self, actions: list[GroundAction], search: list[int]) -> str:
         lines = ["def successors(s):", "    out = []"]
-        for i, a in enumerate(actions):
+        for i in search:
+            a = actions[i]
             lines.append(f"    # {a.name}")
             indent = "    "
             for kind, text in self.action_parts(a):
@@ -316,8 +317,9 @@ class Emitter:
     def predicate_source(self, name: str, node) -> str:
         return f"def {name}(s):\n    return {self.ex(node)}"
 
-    def build(self, actions: list[GroundAction], goal, failure) -> tuple[dict, str]:
-        parts = [self.successors_source(actions)]
+    def build(self, actions: list[GroundAction], goal, failure, search: list[int]) -> tuple[dict, str]:
+        """`search`: the actions `successors` generates (all but those pruned as irrelevant)."""
+        parts = [self.successors_source(actions, search)]
         parts += [self.apply_source(i, a) for i, a in enumerate(actions)]
         parts.append(self.predicate_source("goal", goal))
         parts.append(self.predicate_source("failure", failure))

@@ -14,7 +14,10 @@ from .base import Budget, Result
 
 BUILTIN = {
     "bfs": ("bcc.solvers.bfs:solve", "breadth-first search (optimal for unit costs)"),
-    "astar": ("bcc.solvers.astar:solve", "A* with a heuristic (--heuristic, default manhattan; optimal)"),
+    "astar": ("bcc.solvers.astar:solve", "A* (optimal; --heuristic auto|pdb|manhattan|blind, --weight W > 1 for weighted)"),
+    "wastar": ("bcc.solvers.astar:solve_weighted", "weighted A*, f = g + w h (--weight, default 2; cost <= w x optimal)"),
+    "gbfs": ("bcc.solvers.gbfs:solve", "greedy best-first search (fast, not optimal)"),
+    "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
 }
 
 __all__ = ["Budget", "Result", "get_solver", "list_solvers"]

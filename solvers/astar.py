@@ -1,8 +1,15 @@
-"""A* search: optimal with an admissible heuristic (default: manhattan).
+"""A* search, and its weighted variant: f = g + w * h.
 
-Open list: a heap of (f, h, tie, state) -- among equal f, lower h (closer to the goal)
-first. Duplicates are detected on the packed states; a state reached again more cheaply
-is re-queued (lazy deletion), so a merely admissible heuristic stays optimal.
+With w = 1 and an admissible heuristic the plan is optimal; w > 1 (`wastar`, `--weight`)
+trades optimality for speed (cost at most w times the optimum). Open list: a heap of
+(f, h, tie, state) -- among equal f, lower h first. Duplicates are detected on the packed
+states; a state reached again more cheaply is re-queued (lazy deletion), so a merely
+admissible heuristic stays optimal.
+
+Heuristic `auto` (the default) starts with the cheap `manhattan` and, if the search is
+still running after SWITCH_AFTER expansions, builds the pattern database and re-sorts the
+open list by it. Both are consistent, so optimality is kept: every closed state already
+has its optimal g, and the open list still holds a state of some optimal path.
 """
 from __future__ import annotations
 
@@ -13,21 +20,28 @@ from ..model import Model
 from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
 from .heuristics import HEURISTICS
 
+SWITCH_AFTER = 4096
 
-def solve(model: Model, budget: Budget, progress=None, heuristic: str = "manhattan", weight: float = 1.0,
-          **options) -> Result:
-    name = "astar"
+
+def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", weight: float = 1.0,
+          name: str = "astar", **options) -> Result:
     meter = Meter(budget, progress)
-    h = HEURISTICS[heuristic](model)
+    switching = heuristic == "auto"
+    used = "manhattan" if switching else heuristic
+    h = HEURISTICS[used](model)
     start = model.initial
     h0 = h(start)
     parents = {start: None}
     g_of = {start: 0}
     costs = model.action_costs
     successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
+
+    def result(**kw) -> Result:
+        return meter.finish(Result(name, heuristic=used, initial_h=h0, stored=len(parents), **kw))
+
     if h0 == math.inf:
-        return meter.finish(Result(name, False, "no_solution", stored=1, heuristic=heuristic, initial_h=h0,
-                                   message="no plan exists: the goal cannot hold at any reachable position"))
+        return result(solved=False, status="no_solution",
+                      message="no plan exists: the goal cannot hold at any reachable position")
     tie = 0
     open_heap = [(weight * h0, h0, tie, start)]
     closed = set()
@@ -39,16 +53,21 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "manhatt
         g = g_of[state]
         if is_goal(state):
             plan, cost = extract_plan(model, parents, state)
-            return meter.finish(Result(name, True, "solved", plan, cost, expanded, generated, len(parents),
-                                       heuristic=heuristic, initial_h=h0))
+            return result(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded, generated=generated)
         closed.add(state)
         expanded += 1
         if expanded % CHECK_EVERY == 0:
             which = meter.check(expanded, generated, len(parents))
             if which:
                 r = budget_result(name, which, meter, expanded, generated, len(parents))
-                r.heuristic, r.initial_h = heuristic, h0
+                r.heuristic, r.initial_h = used, h0
                 return r
+            if switching and expanded >= SWITCH_AFTER:
+                switching = False
+                h = HEURISTICS["pdb"](model)
+                used = "auto (manhattan, then pdb)"
+                open_heap = _resort(open_heap, closed, g_of, h, weight)
+                continue
         for action, nxt in successors(state):
             generated += 1
             g2 = g + costs[action]
@@ -65,6 +84,24 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "manhatt
             closed.discard(nxt)
             tie += 1
             heapq.heappush(open_heap, (g2 + weight * hn, hn, tie, nxt))
-    return meter.finish(Result(name, False, "no_solution", expanded=expanded, generated=generated,
-                               stored=len(parents), heuristic=heuristic, initial_h=h0,
-                               message="no plan exists: every reachable state was explored"))
+    return result(solved=False, status="no_solution", expanded=expanded, generated=generated,
+                  message="no plan exists: every reachable state was explored")
+
+
+def _resort(open_heap, closed, g_of, h, weight) -> list:
+    """The open list under a new heuristic (stale and dead-end entries dropped)."""
+    fresh, seen = [], set()
+    for _, _, tie, state in open_heap:
+        if state in closed or state in seen:
+            continue
+        seen.add(state)
+        hn = h(state)
+        if hn != math.inf:
+            fresh.append((g_of[state] + weight * hn, hn, tie, state))
+    heapq.heapify(fresh)
+    return fresh
+
+
+def solve_weighted(model: Model, budget: Budget, progress=None, weight: float = 2.0, **options) -> Result:
+    """Weighted A* (default w = 2): usually much faster, cost at most w x optimal."""
+    return solve(model, budget, progress, weight=weight, name="wastar", **options)

@@ -1,5 +1,7 @@
 """Heuristics over a compiled model; each `make(model)` returns h(state) -> number.
 
+`pdb` (the default) looks up the compiler's pattern database: maze distance with turns.
+
 `manhattan` is the distance from the agent's position to the nearest position at which
 the goal may hold (found by the compiler's over-approximation, so it never overestimates
 when each action moves the agent at most one cell at cost >= 1).
@@ -51,4 +53,17 @@ def manhattan(model: Model):
     return lambda s: table[sum(s[i] * st for i, st in idx)]
 
 
-HEURISTICS = {"manhattan": manhattan, "blind": blind}
+def pdb(model: Model):
+    """The pattern database the compiler builds (compiler/patterns.py): exact distances in
+    an abstraction over the agent's position and facing; falls back to manhattan."""
+    db = model.data("pattern_database")
+    if db is None:
+        return manhattan(model)
+    table = db.table
+    if len(db.indices) == 3:
+        (i0, i1, i2), (_, n1, n2) = db.indices, db.sizes  # the common case, without a loop
+        return lambda s: table[(s[i0] * n1 + s[i1]) * n2 + s[i2]]
+    return lambda s: table[db.index_of(s)]
+
+
+HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind}

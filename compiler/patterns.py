@@ -1,0 +1,153 @@
+"""A pattern database built from the compiled model, domain-independently.
+
+The pattern is the agent's position variables plus every variable their new values are
+computed from (here: x, z and the facing, which `move_forward` reads). The abstract state
+space is the product of the pattern variables' ranges; other variables range over their
+reachable values (reachability.py), grid cells over their possible values. An abstract
+transition exists when an action's preconditions may hold; a backward Dijkstra from the
+abstract states where the goal may hold gives h = the exact abstract distance, which
+never overestimates (every real path maps to an abstract path) and is consistent.
+For a block world this is the maze distance with turns, passing mineable blocks at cost 0.
+"""
+from __future__ import annotations
+
+import heapq
+import itertools
+import math
+from dataclasses import dataclass
+
+from . import ir
+from .abstract import Abstract, maybe_true
+from .reachability import Analysis
+from .relevance import reads
+
+MAX_PATTERN_STATES = 1_000_000
+
+
+@dataclass(frozen=True)
+class PatternDatabase:
+    indices: tuple      # state byte index of each pattern variable
+    sizes: tuple        # range size of each
+    table: tuple        # flattened distances (math.inf: the goal is unreachable from there)
+    labels: tuple
+
+    def index_of(self, state: bytes) -> int:
+        i = 0
+        for idx, n in zip(self.indices, self.sizes):
+            i = i * n + state[idx]
+        return i
+
+
+def choose_pattern(layout, actions, position_vars: list, an: Analysis) -> list:
+    pattern = [v for v in position_vars if v in layout.by_var]
+    extra = set()
+    for a in actions:
+        lets = {loc.name: value for loc, value in a.lets}
+        for e in _top_sets(a.effects):
+            if e.var in pattern:
+                extra |= {v for v in reads(e.value, an, lets, set()) if isinstance(v, ir.StateVar)}
+    candidate = pattern + sorted(extra - set(pattern), key=lambda v: layout.by_var[v].index)
+    if _size(layout, candidate) <= MAX_PATTERN_STATES:
+        return sorted(candidate, key=lambda v: layout.by_var[v].index)
+    return pattern
+
+
+def _size(layout, variables) -> int:
+    n = 1
+    for v in variables:
+        s = layout.by_var[v]
+        n *= s.hi - s.lo + 1
+    return n
+
+
+def _top_sets(effects):
+    for e in effects:
+        if isinstance(e, ir.When):
+            yield from _top_sets(e.then)
+            yield from _top_sets(e.orelse)
+        elif isinstance(e, ir.SetVar):
+            yield e
+
+
+def build(layout, actions, candidates, goal, reach, n_values, position_vars) -> PatternDatabase | None:
+    an = Analysis(layout, n_values)
+    pattern = choose_pattern(layout, [actions[i] for i in candidates], position_vars, an)
+    if not pattern:
+        return None
+    slots = [layout.by_var[v] for v in pattern]
+    ranges = [range(s.lo, s.hi + 1) for s in slots]
+    sizes = [len(r) for r in ranges]
+    movers = [i for i in candidates if any(e.var in pattern for e in _top_sets(actions[i].effects))]
+    pset = set(pattern)
+
+    def flat(values) -> int:
+        i = 0
+        for v, s, n in zip(values, slots, sizes):
+            i = i * n + (v - s.lo)
+        return i
+
+    n_states = math.prod(sizes)
+    reverse: list = [[] for _ in range(n_states)]
+    goals = []
+    base = dict(reach.values)
+    cell, layer = an.cells(reach.written)
+    for values in itertools.product(*ranges):
+        sets = dict(base)
+        sets.update({var: frozenset({v}) for var, v in zip(pattern, values)})
+        here = flat(values)
+        if maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal)):
+            goals.append(here)
+        for i in movers:
+            a = actions[i]
+            ab = an.abstract(a, sets, reach.written)
+            if not an.applies(a, ab):
+                continue
+            options = _next_values(an, ab, a.effects, pattern, pset, values)
+            for nxt in itertools.product(*options):
+                there = flat(nxt)
+                if there != here:
+                    reverse[there].append((here, a.cost))
+    dist = [math.inf] * n_states
+    heap = [(0, g) for g in goals]
+    for g in goals:
+        dist[g] = 0
+    heapq.heapify(heap)
+    while heap:
+        d, u = heapq.heappop(heap)
+        if d > dist[u]:
+            continue
+        for v, c in reverse[u]:
+            if d + c < dist[v]:
+                dist[v] = d + c
+                heapq.heappush(heap, (d + c, v))
+    return PatternDatabase(tuple(s.index for s in slots), tuple(sizes),
+                           tuple(int(d) if d != math.inf else math.inf for d in dist),
+                           tuple(v.label for v in pattern))
+
+
+def _next_values(an, ab, effects, pattern, pset, current) -> list:
+    """Per pattern variable, the values it may have after the action (an over-approximation)."""
+    options = {v: set() for v in pattern}
+    always = set()
+
+    def walk(effs, top):
+        for e in effs:
+            if isinstance(e, ir.When):
+                c = ab.eval(e.cond)
+                if maybe_true(c):
+                    walk(e.then, False)
+                if c is None or False in c:
+                    walk(e.orelse, False)
+            elif isinstance(e, ir.SetVar) and e.var in pset:
+                v = ab.eval(e.value)
+                options[e.var] |= an.full_range(e.var) if v is None else v
+                if top:
+                    always.add(e.var)
+
+    walk(effects, True)
+    out = []
+    for var, cur in zip(pattern, current):
+        vals = options[var] if var in always else options[var] | {cur}
+        slot = an.L.by_var[var]
+        out.append(sorted(v for v in vals if slot.lo <= v <= slot.hi))
+    return out

@@ -1,0 +1,84 @@
+"""IDA*: depth-first iterations with a growing f bound. Memory is the path, not the space.
+
+Optimal with an admissible heuristic. Only the current path is checked for cycles, so
+transpositions are searched again: slower than A* where A* fits in memory, but it never
+runs out of it. `stored` reports the deepest path.
+"""
+from __future__ import annotations
+
+import math
+
+from ..model import Model
+from .base import CHECK_EVERY, Budget, Meter, Result
+from .heuristics import HEURISTICS
+
+
+class _Stop(Exception):
+    def __init__(self, which):
+        self.which = which
+
+
+def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", **options) -> Result:
+    meter = Meter(budget, progress)
+    h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
+    costs, successors, is_goal, is_failure = model.action_costs, model.successors, model.is_goal, model.is_failure
+    start = model.initial
+    counters = {"expanded": 0, "generated": 0, "depth": 0}
+    path_states, path_actions = [start], []
+    on_path = {start}
+
+    def dfs(state, g, bound):
+        f = g + h(state)
+        if f > bound:
+            return f
+        if is_goal(state):
+            return True
+        counters["expanded"] += 1
+        if counters["expanded"] % CHECK_EVERY == 0:
+            which = meter.check(counters["expanded"], counters["generated"], len(path_states))
+            if which:
+                raise _Stop(which)
+        smallest = math.inf
+        children = []
+        for action, nxt in successors(state):
+            counters["generated"] += 1
+            if nxt in on_path or is_failure(nxt):
+                continue
+            children.append((h(nxt) + costs[action], action, nxt))
+        children.sort(key=lambda c: c[0])  # most promising first
+        for _, action, nxt in children:
+            path_states.append(nxt)
+            path_actions.append(action)
+            on_path.add(nxt)
+            counters["depth"] = max(counters["depth"], len(path_states))
+            t = dfs(nxt, g + costs[action], bound)
+            if t is True:
+                return True
+            path_states.pop()
+            path_actions.pop()
+            on_path.discard(nxt)
+            smallest = min(smallest, t)
+        return smallest
+
+    import sys
+    sys.setrecursionlimit(max(sys.getrecursionlimit(), 100_000))
+    bound = h(start)
+    h0 = bound
+    try:
+        while bound != math.inf:
+            t = dfs(start, 0, bound)
+            if t is True:
+                plan = [model.action_names[a] for a in path_actions]
+                return meter.finish(Result("idastar", True, "solved", plan, sum(costs[a] for a in path_actions),
+                                           counters["expanded"], counters["generated"], counters["depth"],
+                                           heuristic=heuristic, initial_h=h0))
+            bound = t
+    except _Stop as stop:
+        from .base import BUDGET_WORDS
+        return meter.finish(Result("idastar", False, "budget", expanded=counters["expanded"],
+                                   generated=counters["generated"], stored=counters["depth"], budget=stop.which,
+                                   heuristic=heuristic, initial_h=h0,
+                                   message=f"stopped: {BUDGET_WORDS[stop.which]} ran out"))
+    return meter.finish(Result("idastar", False, "no_solution", expanded=counters["expanded"],
+                               generated=counters["generated"], stored=counters["depth"], heuristic=heuristic,
+                               initial_h=h0, message="no plan exists: no path within any bound"))
