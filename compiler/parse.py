@@ -20,7 +20,7 @@ _SPELLING = {
     "LPAR": "'('", "RPAR": "')'", "LSQB": "'['", "RSQB": "']'", "LBRACE": "'{'", "RBRACE": "'}'",
     "COMMA": "','", "DOT": "'.'", "COLON": "':'", "SEMICOLON": "';'", "EQUAL": "'='",
     "MINUS": "'-'", "CMP_OP": "a comparison", "ADD_OP": "'+' or '-'", "MUL_OP": "'*', '//' or '%'",
-    "NAME": "a name", "INT": "a number", "$END": "the end of the text",
+    "NAME": "a name", "INT": "a number", "$END": "the end of the text", "_IN": "'in' or ':'",
 }
 
 
@@ -158,7 +158,10 @@ def _parse(text: str, start: str, where: Origin):
 
 
 def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:
-    expected = sorted({_spell(t) for t in getattr(exc, "expected", None) or getattr(exc, "allowed", None) or ()})
+    # `accepts` (lark >= 1.0) is what the parser can really take here; `expected` may list
+    # tokens of states reached only by default reductions.
+    names = getattr(exc, "accepts", None) or getattr(exc, "expected", None) or getattr(exc, "allowed", None) or ()
+    expected = sorted({_spell(t) for t in names})
     want = f"; expected {', '.join(expected[:6])}{' ...' if len(expected) > 6 else ''}" if expected else ""
     if isinstance(exc, UnexpectedToken) and exc.token.type == "$END" or isinstance(exc, UnexpectedEOF):
         lines = text.rstrip().splitlines() or [""]

@@ -304,7 +304,7 @@ def world_from_map(text: str, legend: dict, height: int, start: str = "S", facin
             if ch == start:
                 start_at = (x, len(column), z)
     inv = [(AIR, 0)] * SLOTS
-    for slot, (item, count) in enumerate(inventory or [(PICKAXE, 1)]):
+    for slot, (item, count) in enumerate([(PICKAXE, 1)] if inventory is None else inventory):
         inv[slot] = (item, count)
     x, y, z = start_at
     return World(width, height, depth, tuple(blocks), x, y, z, FACING[facing], LOOKING[looking],
