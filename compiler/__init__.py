@@ -35,6 +35,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     dungeon = load_dungeon(ref)
     goal_src = _goal(dungeon, goal)
     # Pass 1 finds which attributes and grid layers actions change; pass 2 folds the rest.
+    Grounder(dungeon, None).check_domain()
     discovery = Grounder(dungeon, None)
     _ground_actions(discovery, dungeon)
     dynamic = {w for w in discovery.writes if w[0] != "<grid>"}

@@ -148,13 +148,13 @@ def _check_binding(data, b, classes) -> None:
 
     def cls(container, key):
         name = container[key]
-        if name not in classes:
+        if not isinstance(name, str) or name not in classes:
             raise error_at(container, key, f"unknown class {name!r}{suggest(str(name), classes)}")
         return classes[name]
 
     def attr(container, key, cdef):
         name = container[key]
-        if name not in cdef.attrs:
+        if not isinstance(name, str) or name not in cdef.attrs:
             raise error_at(container, key, f"class {cdef.name!r} has no attribute {name!r}{suggest(str(name), cdef.attrs)}")
 
     for key in ("grid", "agent"):
@@ -234,8 +234,13 @@ def _load_enums(section) -> dict[str, EnumType]:
             if not isinstance(vdef, YMap):
                 raise error_at(values, vname, "a value's definition must be a mapping, e.g. {id: 7}")
             check_keys(vdef, {"id"} | set(defaults), set(), f"value {vname!r}")
+            if str(vname) in names:
+                raise error_at(values, i if isinstance(values, YList) else vname, f"{vname!r} is listed twice in {tname!r}")
+            vid = vdef.get("id", i)
+            if not isinstance(vid, int) or isinstance(vid, bool):
+                raise error_at(vdef, "id", "`id` must be a whole number")
             names.append(str(vname))
-            ids.append(int(vdef.get("id", i)))
+            ids.append(vid)
             for p in defaults:
                 v = vdef.get(p, defaults[p])
                 if type(v) is not type(defaults[p]):
@@ -273,6 +278,8 @@ def _load_classes(data, enums) -> dict[str, ClassDef]:
         for aname, adef in (cdef["attributes"] or {}).items():
             attrs[aname] = _load_attr(cdef["attributes"], aname, adef, enums)
         for listed in ("key", "position"):
+            if listed in cdef and not (isinstance(cdef[listed], YList) and all(isinstance(a, str) for a in cdef[listed])):
+                raise error_at(cdef, listed, f"`{listed}` is a list of attribute names, e.g. [x, y, z]")
             for i, a in enumerate(cdef.get(listed) or []):
                 if a not in attrs:
                     raise error_at(cdef[listed], i, f"{a!r} is not an attribute of {cname!r}{suggest(str(a), attrs)}")
@@ -290,6 +297,8 @@ def _load_attr(section, aname, adef, enums) -> AttrDef:
         raise error_at(section, aname, "an attribute is a type name or a mapping with `type`")
     check_keys(adef, {"type", "range", "names", "default", "description"}, {"type"}, f"attribute {aname!r}")
     atype = adef["type"]
+    if not isinstance(atype, str):
+        raise error_at(adef, "type", "`type` is one type name: int, bool or an enumeration")
     if atype not in BUILTIN_TYPES and atype not in enums:
         raise error_at(adef, "type", f"unknown type {atype!r}{suggest(str(atype), list(enums) + list(BUILTIN_TYPES))}")
     rng = None
@@ -298,7 +307,10 @@ def _load_attr(section, aname, adef, enums) -> AttrDef:
         if atype != "int" or not isinstance(r, YList) or len(r) != 2:
             raise error_at(adef, "range", "`range` is [low, high] and only for int attributes")
         rng = tuple(_expr(r, i) for i in range(2))
-    names = dict(adef.get("names") or {})
+    names = adef.get("names") or YMap()
+    if not isinstance(names, YMap) or not all(isinstance(v, int) and not isinstance(v, bool) for v in names.values()):
+        raise error_at(adef, "names", "`names` maps value names to numbers, e.g. {north: 2}")
+    names = dict(names)
     default = adef.get("default")
     if default is None:
         default = {"int": 0, "bool": False}.get(atype, enums[atype].values[0] if atype in enums else None)
@@ -329,7 +341,10 @@ def _load_action(section, name, known_types) -> ActionDef:
         raise error_at(section, name, "an action needs at least `effect`")
     check_keys(adef, {"params", "let", "pre", "effect", "cost", "description"}, {"effect"}, f"action {name!r}")
     params = _param_list(adef, known_types)
-    lets = [(_ident(adef["let"], k, k, "a let name"), _expr(adef["let"], k)) for k in (adef.get("let") or {})]
+    let_section = adef.get("let") or YMap()
+    if not isinstance(let_section, YMap):
+        raise error_at(adef, "let", "`let` maps names to expressions, e.g. {tx: a.x + 1}")
+    lets = [(_ident(let_section, k, k, "a let name"), _expr(let_section, k)) for k in let_section]
     pre = adef.get("pre")
     if pre is None:
         pres = []

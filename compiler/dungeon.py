@@ -293,7 +293,8 @@ class _Builder:
             for key, attrs in fields.items():
                 value = room[key]
                 if isinstance(attrs, list):
-                    if not isinstance(value, list) or len(value) != len(attrs) or not all(isinstance(v, int) for v in value):
+                    if not isinstance(value, list) or len(value) != len(attrs) or \
+                            not all(isinstance(v, int) and not isinstance(v, bool) for v in value):
                         raise error_at(room, key, f"`{key}` is a list of {len(attrs)} numbers")
                     values.update(zip(attrs, value))
                 else:

@@ -206,6 +206,8 @@ class Grounder:
     def attr_of(self, obj, attr: str, node, ctx):
         cls = self.dom.classes[obj.cls]
         atype = cls.attrs[attr].type
+        if isinstance(obj, ObjRef) and obj.name is None:  # a symbolic object (check_domain)
+            return ir.Local(f"__{obj.cls}_{attr}", atype)
         if isinstance(obj, ObjRef):
             return self.read(obj.name, obj.cls, attr)
         if attr in cls.key:
@@ -258,7 +260,9 @@ class Grounder:
         if fdef is None:
             raise ctx.error(node, f"unknown function {node.func!r}{suggest(node.func, self.dom.functions)}")
         if node.func in ctx.stack:
-            raise ctx.error(node, f"function {node.func!r} calls itself (functions are expanded inline, so no recursion)")
+            cycle = " -> ".join(ctx.stack[ctx.stack.index(node.func):] + (node.func,))
+            raise ctx.error(node, f"function {node.func!r} calls itself ({cycle}); functions are "
+                                  "expanded inline, so they cannot be recursive")
         if len(node.args) != len(fdef.params):
             raise ctx.error(node, f"{node.func} takes {len(fdef.params)} argument(s) "
                                   f"({', '.join(p.name + ': ' + p.type for p in fdef.params)}), found {len(node.args)}")
@@ -407,6 +411,31 @@ class Grounder:
             if r is not None and lo <= r[0] and r[1] <= hi:
                 return ir.TRUE
         return _in_range(value, lo, hi)
+
+    def symbolic(self, params) -> dict:
+        """Stand-ins for parameters, to type-check a body without grounding it."""
+        env = {}
+        for p in params:
+            cdef = self.dom.classes.get(p.type)
+            if cdef is None:
+                env[p.name] = ir.Local(f"__{p.name}", p.type)
+            elif cdef.key:
+                env[p.name] = KeyRef(p.type, tuple(ir.Local(f"__{p.name}_{k}", "int") for k in cdef.key))
+            else:
+                env[p.name] = ObjRef(None, p.type)
+        return env
+
+    def check_domain(self) -> None:
+        """Type-check every function and every action schema once, called or not."""
+        for fdef in self.dom.functions.values():
+            self.expr(fdef.body.node, Ctx(fdef.body, self.symbolic(fdef.params), (fdef.name,)))
+        for schema in self.dom.actions.values():
+            env = self.symbolic(schema.params)
+            for name, src in schema.lets:
+                env[name] = self.expr(src.node, Ctx(src, env))
+            for src in schema.pre:
+                self.bool_expr(src.node, Ctx(src, env))
+            self.effects(schema.effects.node, Ctx(schema.effects, env))
 
     # ---- effects ---------------------------------------------------------------------
     def effects(self, nodes, ctx: Ctx) -> tuple:

@@ -41,6 +41,13 @@ class SourceFile:
     path: str
     text: str
 
+    def line_starts(self) -> list:
+        starts, pos = [0], 0
+        for line in self.text.splitlines(keepends=True):
+            pos += len(line)
+            starts.append(pos)
+        return starts
+
     def line_text(self, line: int) -> str:
         lines = self.text.splitlines()
         return lines[line - 1] if 0 < line <= len(lines) else ""
@@ -48,17 +55,29 @@ class SourceFile:
 
 @dataclass(frozen=True)
 class Origin:
-    """Where an embedded text (an expression, a map) starts in its file.
+    """Where an embedded text (an expression, a map) lives in its file.
 
-    `line`/`col` locate its first character; for block scalars (`|`, `>`) each further
-    line starts at column `indent`, for other scalars further lines are approximate."""
+    Either the text starts at `line`/`col` and further lines start at column `indent`
+    (block scalars), or `positions` gives the file (line, col) of every character of the
+    text -- needed where YAML folds lines, strips quotes or expands escapes."""
     path: str | None
     line: int
     col: int
     indent: int = 1
+    positions: tuple | None = None
+    text: str | None = None
 
     def locate(self, line: int, col: int) -> tuple[int, int]:
         """File position of (line, col) inside the embedded text (both 1-based)."""
+        if self.positions is not None:
+            lines = self.text.split("\n")
+            offset = sum(len(l) + 1 for l in lines[:max(line - 1, 0)]) + col - 1
+            if not self.positions:
+                return self.line, self.col
+            if offset < len(self.positions):
+                return self.positions[max(offset, 0)]
+            last_line, last_col = self.positions[-1]
+            return last_line, last_col + 1 + offset - len(self.positions)
         if line <= 1:
             return self.line, self.col + col - 1
         return self.line + line - 1, self.indent + col - 1
@@ -159,21 +178,52 @@ def error_on(container, message: str) -> BccError:
 
 
 def origin(container, key) -> Origin:
-    """Where the text of the scalar container[key] starts (for expressions and maps)."""
+    """Where the text of the scalar container[key] lives (for expressions and maps)."""
     node = value_node(container, key)
     src = container.src_of(key) if isinstance(container, YMap) else container.src
     line, col = node_pos(node)
     style = getattr(node, "style", None)
-    if style in ("|", ">"):
-        lines = src.text.splitlines()
-        first = line  # 0-based index of the first content line = 1-based line of the indicator
-        while first < len(lines) and not lines[first].strip():
-            first += 1
-        indent = len(lines[first]) - len(lines[first].lstrip(" ")) + 1 if first < len(lines) else 1
-        return Origin(src.path, first + 1, indent, indent)
-    if style in ('"', "'"):
-        return Origin(src.path, line, col + 1, 1)
-    return Origin(src.path, line, col, 1)
+    value = node.value if isinstance(node, yaml.ScalarNode) else None
+    lines = src.text.splitlines()
+    if style == "|" and isinstance(value, str):
+        # A literal block keeps its lines one for one, from the line after the indicator.
+        indicator = lines[line - 1] if line - 1 < len(lines) else ""
+        digits = [c for c in indicator[col:] if c.isdigit()]
+        if digits:
+            indent = len(indicator) - len(indicator.lstrip(" ")) + int(digits[0]) + 1
+        else:
+            first = next((l for l in lines[line:] if l.strip()), "")
+            indent = len(first) - len(first.lstrip(" ")) + 1
+        return Origin(src.path, line + 1, indent, indent)
+    if not isinstance(value, str):
+        return Origin(src.path, line, col, 1)
+    return Origin(src.path, line, col, 1, _align(src, node, value), value)
+
+
+def _align(src: SourceFile, node, value: str) -> tuple:
+    """The file (line, col) of each character of a scalar's value: walk the value and the
+    source text together, skipping what YAML removed (quotes, folded line breaks and
+    indentation, escape sequences); a character not found nearby maps to where we are."""
+    text = src.text
+    start, end = node.start_mark.index, node.end_mark.index
+    starts = src.line_starts()
+    out, i = [], start
+    for ch in value:
+        j = i
+        limit = min(end, i + 12)
+        while j < limit and text[j] != ch and not (ch == " " and text[j] == "\n"):
+            j += 1
+        if j < limit:
+            i = j
+        out.append(_line_col(starts, min(i, max(end - 1, start))))
+        i += 1
+    return tuple(out)
+
+
+def _line_col(starts: list, index: int) -> tuple[int, int]:
+    import bisect
+    k = bisect.bisect_right(starts, index) - 1
+    return k + 1, index - starts[k] + 1
 
 
 def check_keys(container: YMap, allowed: set[str], required: set[str], what: str) -> None:

@@ -56,7 +56,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
             return result(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded, generated=generated)
         closed.add(state)
         expanded += 1
-        if expanded % CHECK_EVERY == 0:
+        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
             if which:
                 r = budget_result(name, which, meter, expanded, generated, len(parents))

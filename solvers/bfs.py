@@ -23,7 +23,7 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     while frontier:
         state = frontier.popleft()
         expanded += 1
-        if expanded % CHECK_EVERY == 0:
+        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
             if which:
                 return budget_result("bfs", which, meter, expanded, generated, len(parents))

@@ -27,7 +27,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
             return meter.finish(Result("gbfs", True, "solved", plan, cost, expanded, generated, len(parents),
                                        heuristic=heuristic, initial_h=h0))
         expanded += 1
-        if expanded % CHECK_EVERY == 0:
+        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
             if which:
                 return budget_result("gbfs", which, meter, expanded, generated, len(parents))

@@ -524,12 +524,6 @@ def test_place_block_facing_out_of_the_map(build):
 
 # ---------------------------------------------------------------- the bottom layer
 
-@pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
-    "bcc bug: with the agent standing in the bottom layer (y = 0), the cell one below "
-    "foot level is outside the world; place_block's `floor.fillable` reads it as air, "
-    "passes its precondition and then apply()/successors() raise ModelError "
-    "('changes the cell (1, -1, 0), which is outside the grid') instead of treating the "
-    "action as not applicable"))
 def test_place_block_with_no_layer_below_the_feet_is_not_applicable(build):
     # An empty start column puts the agent at y = 0: there is no cell below its feet.
     rows = "S..\n..."

@@ -422,9 +422,6 @@ UNUSED_CASES = [
 ]
 
 
-@pytest.mark.xfail(strict=True, reason="bcc bug: function bodies are only checked where a goal, precondition "
-                                       "or effect calls them, so a broken function nobody calls compiles "
-                                       "(exit 0) instead of exit 2")
 @pytest.mark.parametrize("case", UNUSED_CASES, ids=[c.id for c in UNUSED_CASES])
 def test_errors_in_functions_nobody_calls_are_reported(tmp_path, case):
     domain, domain_text, dungeon = write_domain_case(tmp_path, case)
@@ -432,11 +429,6 @@ def test_errors_in_functions_nobody_calls_are_reported(tmp_path, case):
 
 
 # ---- malformed domain sections (a value of the wrong YAML shape) ---------------------------
-def _shape_bug(reason: str):
-    return pytest.mark.xfail(strict=True, reason="bcc bug: " + reason + " (CLI: exit 3 'internal error', "
-                                                 "library: not a BccError)")
-
-
 SHAPE_CASES = [
     DomainCase("cost-not-a-number", "  rotate_left:\n", "  rotate_left:\n    cost: two\n", at("two"), ("cost",)),
     DomainCase("params-a-list", "  rotate_left:\n    params: {a: agent}", "  rotate_left:\n    params: [a]",
@@ -452,37 +444,23 @@ SHAPE_CASES = [
                ("did you mean 'block'",)),
     DomainCase("pre-not-text", "  rotate_left:\n", "  rotate_left:\n    pre: [{a: 1}]\n", at("{a: 1}"),
                ("expression",)),
-    pytest.param(DomainCase("let-a-string", "  rotate_left:\n", "  rotate_left:\n    let: oops\n", at("oops"),
+    DomainCase("let-a-string", "  rotate_left:\n", "  rotate_left:\n    let: oops\n", at("oops"),
                             ("let",)),
-                 marks=_shape_bug("`let:` that is not a mapping raises TypeError in domain._load_action")),
-    pytest.param(DomainCase("let-a-list", "  rotate_left:\n", "  rotate_left:\n    let: [tx, tz]\n",
+    DomainCase("let-a-list", "  rotate_left:\n", "  rotate_left:\n    let: [tx, tz]\n",
                             at("[tx, tz]"), ("let",)),
-                 marks=_shape_bug("`let:` that is a list raises TypeError in domain._load_action")),
-    pytest.param(DomainCase("names-a-list", "names: {ahead: 0, down: 1}", "names: [ahead, down]",
+    DomainCase("names-a-list", "names: {ahead: 0, down: 1}", "names: [ahead, down]",
                             at("[ahead, down]"), ("names",)),
-                 marks=_shape_bug("attribute `names:` that is not a mapping raises ValueError in "
-                                  "domain._load_attr (dict(...))")),
-    pytest.param(DomainCase("key-a-number", "key: [slot]", "key: 3", at("3\n"), ("key",)),
-                 marks=_shape_bug("class `key:` that is a number raises TypeError in domain._load_classes")),
-    pytest.param(DomainCase("key-a-string", "key: [slot]", "key: slot", at("slot\n"), ("key",)),
-                 marks=pytest.mark.xfail(strict=True, reason="bcc bug: `key: slot` (a string) is iterated "
-                                         "character by character and the error \"'s' is not an attribute\" "
-                                         "has no file or position")),
-    pytest.param(DomainCase("enum-id-not-a-number", "air:             {id: 0, fillable: true}",
+    DomainCase("key-a-number", "key: [slot]", "key: 3", at("3\n"), ("key",)),
+    DomainCase("key-a-string", "key: [slot]", "key: slot", at("slot\n"), ("key",)),
+    DomainCase("enum-id-not-a-number", "air:             {id: 0, fillable: true}",
                             "air:             {id: zero, fillable: true}", at("zero"), ("id",)),
-                 marks=_shape_bug("an enumeration value's `id:` that is not an int raises ValueError "
-                                  "(int('zero')) in domain._load_enums")),
-    pytest.param(DomainCase("binding-class-a-list", "  agent: agent ", "  agent: [agent] ", at("[agent]")),
-                 marks=_shape_bug("`dungeon: agent: [agent]` raises TypeError (unhashable YList) in "
-                                  "dungeon._Builder.cls")),
-    pytest.param(DomainCase("attribute-type-a-list", "xMin: {type: int}", "xMin: {type: [int]}", at("[int]"),
+    DomainCase("binding-class-a-list", "  agent: agent ", "  agent: [agent] ", at("[agent]")),
+    DomainCase("attribute-type-a-list", "xMin: {type: int}", "xMin: {type: [int]}", at("[int]"),
                             ("type",)),
-                 marks=_shape_bug("attribute `type: [int]` raises TypeError (unhashable YList) in "
-                                  "domain._load_attr")),
 ]
 
 
-@pytest.mark.parametrize("case", SHAPE_CASES, ids=[getattr(c, "id", None) or c.values[0].id for c in SHAPE_CASES])
+@pytest.mark.parametrize("case", SHAPE_CASES, ids=[c.id for c in SHAPE_CASES])
 def test_malformed_domain_section_is_bad_input(tmp_path, case):
     domain, domain_text, dungeon = write_domain_case(tmp_path, case)
     check_bad_input(run_cli("compile", str(dungeon)), domain, case.where(domain_text), case.says)
@@ -503,10 +481,6 @@ POSITION_BUGS = [
 ]
 
 
-@pytest.mark.xfail(strict=True, reason="bcc bug: source.origin() maps positions inside scalars that are not "
-                                       "plain block scalars wrongly: continuation lines of plain/quoted "
-                                       "scalars, leading blank lines of `|` scalars, explicit indentation "
-                                       "indicators (`|1`) and escapes in double quotes")
 @pytest.mark.parametrize("case", POSITION_BUGS, ids=[c.id for c in POSITION_BUGS])
 def test_positions_inside_other_scalar_styles(tmp_path, case):
     text = apply(BASE, case)

@@ -122,3 +122,10 @@ goal: agentOnBlock(agent, gold)
 
 def test_registry_lists_builtins():
     assert {"bfs", "astar"} <= set(list_solvers())
+
+
+@pytest.mark.parametrize("solver", ["bfs", "astar", "gbfs"])
+def test_small_state_budgets_are_honoured_exactly(solver):
+    # Checked at every expansion, not only every CHECK_EVERY expansions.
+    result = get_solver(solver)(compiled("tough_maze"), Budget(max_states=50))
+    assert result.status == "budget" and result.stored <= 50 + 8  # one expansion adds <= 8 states
