@@ -265,3 +265,31 @@ def solvers_cmd(as_json):
         return
     for name, doc in solvers.items():
         click.echo(f"  {name:<8} {doc}")
+
+
+@main.group("generate")
+def generate_group():
+    """Generate dungeons."""
+
+
+@generate_group.command("maze")
+@click.option("--width", type=int, default=15, show_default=True, help="Columns (odd, >= 5).")
+@click.option("--depth", type=int, default=15, show_default=True, help="Rows (odd, >= 5).")
+@click.option("--stones", type=int, default=0, show_default=True, help="Mineable stones on corridors.")
+@click.option("--lava", type=int, default=0, show_default=True, help="Lava rivers (each comes with a stone to bridge it).")
+@click.option("--loops", type=float, default=0.0, show_default=True, help="Fraction of inner walls knocked out (0..1).")
+@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--name", default=None, help="Dungeon name [default: from the parameters].")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write to FILE (atomically) instead of stdout.")
+@json_option
+def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_json):
+    """A perfect maze (plus optional loops, stones and lava rivers), solvable by construction."""
+    from .generate import generate_maze
+    text = generate_maze(width, depth, stones=stones, lava=lava, loops=loops, seed=seed, name=name)
+    if output:
+        _write(output, text)
+    if as_json:
+        _emit_json({"output": output, "width": width, "depth": depth, "stones": stones, "lava": lava,
+                    "loops": loops, "seed": seed, "yaml": None if output else text})
+    elif not output:
+        click.echo(text, nl=False)
