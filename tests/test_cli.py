@@ -143,3 +143,16 @@ def test_installed_command_runs_as_a_process(tmp_path):
     assert proc.returncode == 0 and json.loads(proc.stdout)["cost"] == 7
     proc = subprocess.run(["bcc", "solve", "grid", "--goal", "agentOnBlock(agent, lava)"], capture_output=True, text=True)
     assert proc.returncode == 1 and "Traceback" not in proc.stderr
+
+
+def test_generate_maze_then_solve(tmp_path):
+    out = tmp_path / "maze.yaml"
+    result = run("generate", "maze", "--width", "11", "--depth", "11", "--stones", "2", "--lava", "1",
+                 "--seed", "4", "-o", str(out))
+    assert result.exit_code == 0, result.output
+    solved = json.loads(run("solve", str(out), "--json").stdout)
+    assert solved["solved"] and "place_block" in solved["plan"]  # the river needs a bridge
+    assert run("generate", "maze", "--width", "11", "--depth", "11", "--seed", "4").stdout == \
+        run("generate", "maze", "--width", "11", "--depth", "11", "--seed", "4").stdout
+    bad = run("generate", "maze", "--width", "10")
+    assert bad.exit_code == 2 and "odd" in bad.stderr
