@@ -32,6 +32,9 @@ class BccGroup(click.Group):
         except KeyboardInterrupt:
             click.echo("interrupted", err=True)
             ctx.exit(130)
+        except BrokenPipeError:  # `bcc solve ... | head -1`: the reader left; not an error of ours
+            sys.stdout = None
+            os._exit(0)
         except (click.exceptions.Exit, click.ClickException, click.Abort):
             raise
         except Exception as exc:  # noqa: BLE001 - a bug in bcc: one line, unless debugging

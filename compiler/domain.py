@@ -39,6 +39,7 @@ class EnumType:
     values: list[str]                     # dense index -> name
     ids: list[int]                        # dense index -> external id
     properties: dict[str, list]           # property -> value per dense index
+    prop_types: dict = field(default_factory=dict)  # property -> "bool" | "int" | an enumeration name
 
     def index(self, name: str) -> int:
         return self.values.index(name)
@@ -112,39 +113,112 @@ def resolve_domain_path(ref: str, relative_to: Path | None = None) -> Path:
     raise BccError(f"unknown domain {ref!r}{suggest(ref, shipped)}; shipped domains: {', '.join(sorted(shipped))}")
 
 
-def load_domain(path: str | Path) -> Domain:
+DOMAIN_KEYS = {"domain", "description", "extends", "types", "constants", "classes", "dungeon",
+               "functions", "failure", "actions"}
+
+
+def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
+    """Load a domain file. With `extends: other`, start from that domain: add types, enum
+    values, constants, classes, functions and actions, or replace one by name when its
+    definition says `override: true`. Redefining without `override` is an error."""
     data = load_yaml(path)
-    check_keys(data, {"domain", "description", "types", "constants", "classes", "dungeon",
-                      "functions", "failure", "actions"}, {"domain", "classes", "actions"}, "a domain")
-    enums = _load_enums(data.get("types", YMap()) if "types" in data else None)
-    constants = _load_constants(data)
-    classes = _load_classes(data, enums)
-    names_in_use = set(enums) | set(classes) | set(BUILTIN_TYPES)
+    base = None
+    if "extends" in data:
+        ref = data["extends"]
+        if not isinstance(ref, str):
+            raise error_at(data, "extends", "`extends` names one domain (a shipped name or a path)")
+        try:
+            base_path = resolve_domain_path(ref, Path(path))
+        except BccError as exc:
+            raise error_at(data, "extends", exc.message) from None
+        chain = _chain + (Path(path).resolve(),)
+        if base_path.resolve() in chain:
+            names = " -> ".join(p.stem for p in chain + (base_path.resolve(),))
+            raise error_at(data, "extends", f"domains extend each other in a cycle: {names}")
+        base = load_domain(base_path, chain)
+    check_keys(data, DOMAIN_KEYS, {"domain"} if base else {"domain", "classes", "actions"}, "a domain")
+    enums = _load_enums(data.get("types"), base.enums if base else {})
+    constants = dict(base.constants) if base else {}
+    for name, values in _load_constants(data).items():
+        if name in constants:
+            raise error_at(data["constants"], name, f"constant {name!r} is already defined in {base.name!r}", on_key=True)
+        constants[name] = values
+    classes = _merge("class", data, "classes", base.classes if base else {},
+                     lambda section, name: _load_class(section, name, enums), base)
     if set(enums) & set(classes):
         clash = sorted(set(enums) & set(classes))[0]
-        raise error_at(data["classes"], clash, f"{clash!r} is both a type and a class", on_key=True)
-    functions = {}
-    section = data.get("functions") or YMap()
-    for name, fdef in section.items():
-        _ident(section, name, name, "a function name")
-        if isinstance(fdef, YMap):
-            check_keys(fdef, {"params", "body", "description"}, {"body"}, f"function {name!r}")
-            functions[name] = FunctionDef(name, _param_list(fdef, names_in_use), _expr(fdef, "body"))
-        else:  # `name: expression` is a function without parameters
-            functions[name] = FunctionDef(name, [], _expr(section, name))
-    actions = {name: _load_action(data["actions"], name, names_in_use) for name in data["actions"]}
-    failure = _expr(data, "failure") if "failure" in data else None
-    binding = data.get("dungeon", YMap())
+        raise error_at(data.get("classes") or data, clash, f"{clash!r} is both a type and a class", on_key=True)
+    names_in_use = set(enums) | set(classes) | set(BUILTIN_TYPES)
+    functions = _merge("function", data, "functions", base.functions if base else {},
+                       lambda section, name: _load_function(section, name, names_in_use), base)
+    actions = _merge("action", data, "actions", base.actions if base else {},
+                     lambda section, name: _load_action(section, name, names_in_use), base)
+    failure = _expr(data, "failure") if "failure" in data else (base.failure if base else None)
+    binding = _merge_binding(data, base)
     _check_binding(data, binding, classes)
     return Domain(str(data["domain"]), str(path), str(data.get("description", "")).strip(), enums,
                   constants, classes, functions, actions, failure, binding, data)
+
+
+def _merge(what: str, data, key: str, inherited: dict, load, base) -> dict:
+    """Definitions of one section: the base's, then this file's (new, or `override: true`)."""
+    out = dict(inherited)
+    section = data.get(key)
+    if section is None:
+        return out
+    if not isinstance(section, YMap):
+        raise error_at(data, key, f"`{key}` must map names to definitions")
+    for name in section:
+        _ident(section, name, name, f"a {what} name")
+        definition = section[name]
+        override = isinstance(definition, YMap) and definition.get("override") is True
+        if name in inherited and not override:
+            raise error_at(section, name, f"{what} {name!r} is already defined in {base.name!r}; "
+                                          "add `override: true` to replace it", on_key=True)
+        if override and name not in inherited:
+            raise error_at(definition, "override", f"nothing to override: {base.name if base else 'no base domain'!r} "
+                                                   f"has no {what} {name!r}")
+        out[name] = load(section, name)
+    return out
+
+
+def _merge_binding(data, base) -> YMap:
+    binding = data.get("dungeon")
+    if binding is None:
+        return base.binding if base else YMap()
+    if base is None or not isinstance(binding, YMap):
+        return binding
+    merged = YMap(base.binding)
+    merged.node, merged.src = binding.node, binding.src
+    merged.nodes = {**getattr(base.binding, "nodes", {}), **binding.nodes}
+    merged.srcs = {**{k: base.binding.src_of(k) for k in base.binding if hasattr(base.binding, "src")},
+                   **{k: binding.src for k in binding}}
+    for k, v in binding.items():
+        if k == "lists" and isinstance(v, YMap) and isinstance(base.binding.get("lists"), YMap):
+            lists = YMap({**base.binding["lists"], **v})
+            lists.node, lists.src = v.node, v.src
+            lists.nodes = {**base.binding["lists"].nodes, **v.nodes}
+            lists.srcs = {**{k2: base.binding["lists"].src_of(k2) for k2 in base.binding["lists"]},
+                          **{k2: v.src for k2 in v}}
+            merged[k] = lists
+        else:
+            merged[k] = v
+    return merged
+
+
+def _load_function(section, name, names_in_use) -> FunctionDef:
+    fdef = section[name]
+    if isinstance(fdef, YMap):
+        check_keys(fdef, {"params", "body", "description", "override"}, {"body"}, f"function {name!r}")
+        return FunctionDef(name, _param_list(fdef, names_in_use), _expr(fdef, "body"))
+    return FunctionDef(name, [], _expr(section, name))  # `name: expression`: no parameters
 
 
 def _check_binding(data, b, classes) -> None:
     """The `dungeon:` section names classes and attributes; check them all here, with positions."""
     if not isinstance(b, YMap):
         raise error_at(data, "dungeon", "`dungeon` maps parts of a dungeon file (grid, agent, ...) to classes")
-    check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms"}, set(), "the `dungeon` section")
+    check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms", "lists"}, set(), "the `dungeon` section")
 
     def cls(container, key):
         name = container[key]
@@ -167,13 +241,19 @@ def _check_binding(data, b, classes) -> None:
         check_keys(fields, {"facing", "looking", "selected"}, set(), "`agent_fields`")
         for key in fields:
             attr(fields, key, cls(b, "agent"))
-    for part, keys in (("inventory", ("item", "count")), ("rooms", ("fields",))):
-        spec = b.get(part)
+    parts = [("inventory", b, ("item", "count")), ("rooms", b, ("fields",))]
+    lists = b.get("lists")
+    if lists is not None:
+        if not isinstance(lists, YMap):
+            raise error_at(b, "lists", "`lists` maps dungeon keys (e.g. animals) to {class, fields}")
+        parts += [(name, lists, ("fields",)) for name in lists]
+    for part, container, keys in parts:
+        spec = container.get(part)
         if spec is None:
             continue
         if not isinstance(spec, YMap):
-            raise error_at(b, part, f"`{part}` needs `class` and {', '.join(keys)}")
-        check_keys(spec, {"class", *keys}, {"class", *keys}, f"`dungeon.{part}`")
+            raise error_at(container, part, f"`{part}` needs `class` and {', '.join(keys)}")
+        check_keys(spec, {"class", "required", *keys}, {"class", *keys}, f"`dungeon.{part}`")
         cdef = cls(spec, "class")
         if part == "inventory":
             for key in keys:
@@ -206,22 +286,47 @@ def _ident(container, key, value, what: str) -> str:
     return value
 
 
-def _load_enums(section) -> dict[str, EnumType]:
-    enums = {}
+def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
+    """Enumerations; a type the base domain has already gets the new values appended."""
+    enums = {name: EnumType(e.name, list(e.values), list(e.ids), {p: list(v) for p, v in e.properties.items()},
+                            dict(e.prop_types)) for name, e in inherited.items()}
     if section is None:
         return enums
     if not isinstance(section, YMap):
         raise error_on(section, "`types` must map type names to their values")
-    for tname, tdef in section.items():
+    for tname in section:  # declare every name first: properties may be of another new type
         _ident(section, tname, tname, "a type name")
         if tname in BUILTIN_TYPES:
             raise error_at(section, tname, f"{tname!r} is a built-in type", on_key=True)
+        if tname not in enums:
+            enums[tname] = EnumType(tname, [], [], {}, {})
+    pending = []
+    for tname, tdef in section.items():
         if not isinstance(tdef, YMap):
             raise error_at(section, tname, "a type needs `values` (a list or a mapping)")
         check_keys(tdef, {"values", "properties"}, {"values"}, f"type {tname!r}")
-        defaults = dict(tdef.get("properties") or {})
+        enum = enums[tname]
+        props = tdef.get("properties") or YMap()
+        if not isinstance(props, YMap):
+            raise error_at(tdef, "properties", "`properties` maps property names to defaults")
+        defaults = {}
+        for p, d in props.items():
+            _ident(props, p, p, "a property name")
+            if p in enum.properties:
+                raise error_at(props, p, f"type {tname!r} already has the property {p!r}", on_key=True)
+            if isinstance(d, YMap):  # {type: other_enum, default: value}
+                check_keys(d, {"type", "default"}, {"type", "default"}, f"property {p!r}")
+                if d["type"] not in enums:
+                    raise error_at(d, "type", f"unknown type {d['type']!r}{suggest(str(d['type']), enums)}")
+                enum.prop_types[p] = d["type"]
+                defaults[p] = d["default"]
+            elif isinstance(d, (bool, int)):
+                enum.prop_types[p] = "bool" if isinstance(d, bool) else "int"
+                defaults[p] = d
+            else:
+                raise error_at(props, p, "a property default is true/false, a number, or {type: T, default: V}")
+            enum.properties[p] = [defaults[p]] * len(enum.values)
         values = tdef["values"]
-        names, ids, props = [], [], {p: [] for p in defaults}
         if isinstance(values, YList):
             items = [(v, YMap()) for v in values]
             for i, v in enumerate(values):
@@ -231,24 +336,35 @@ def _load_enums(section) -> dict[str, EnumType]:
         else:
             raise error_at(tdef, "values", "`values` must be a list of names or a mapping")
         for i, (vname, vdef) in enumerate(items):
+            where = (values, i if isinstance(values, YList) else vname)
             if not isinstance(vdef, YMap):
-                raise error_at(values, vname, "a value's definition must be a mapping, e.g. {id: 7}")
-            check_keys(vdef, {"id"} | set(defaults), set(), f"value {vname!r}")
-            if str(vname) in names:
-                raise error_at(values, i if isinstance(values, YList) else vname, f"{vname!r} is listed twice in {tname!r}")
-            vid = vdef.get("id", i)
+                raise error_at(*where, "a value's definition must be a mapping, e.g. {id: 7}")
+            check_keys(vdef, {"id"} | set(enum.properties), set(), f"value {vname!r}")
+            if str(vname) in enum.values:
+                raise error_at(*where, f"{vname!r} is listed twice in {tname!r}")
+            vid = vdef.get("id", len(enum.values))
             if not isinstance(vid, int) or isinstance(vid, bool):
                 raise error_at(vdef, "id", "`id` must be a whole number")
-            names.append(str(vname))
-            ids.append(vid)
-            for p in defaults:
-                v = vdef.get(p, defaults[p])
-                if type(v) is not type(defaults[p]):
-                    raise error_at(vdef, p, f"property {p!r} must be {type(defaults[p]).__name__} like its default")
-                props[p].append(v)
-        if len(set(ids)) != len(ids):
-            raise error_at(tdef, "values", f"type {tname!r} has two values with the same id")
-        enums[tname] = EnumType(tname, names, ids, props)
+            if vid in enum.ids:
+                raise error_at(*where, f"type {tname!r} has two values with the id {vid}")
+            enum.values.append(str(vname))
+            enum.ids.append(vid)
+            for p in enum.properties:
+                default = defaults.get(p, enum.properties[p][0] if enum.properties[p] else None)
+                v = vdef.get(p, default)
+                pending.append((enum, p, v, vdef if p in vdef else None))
+                enum.properties[p].append(v)
+    for enum, p, v, vdef in pending:  # check property values once every type is complete
+        ptype = enum.prop_types[p]
+        ok = v in enums[ptype].values if ptype in enums else \
+            (isinstance(v, bool) if ptype == "bool" else isinstance(v, int) and not isinstance(v, bool))
+        if not ok:
+            raise (error_at(vdef, p, f"property {p!r} must be a {ptype}") if vdef is not None
+                   else BccError(f"property {p!r} of {enum.name!r} must be a {ptype}"))
+    for enum in enums.values():  # enum-valued properties are stored as dense indices
+        for p, ptype in enum.prop_types.items():
+            if ptype in enums:
+                enum.properties[p] = [v if isinstance(v, int) else enums[ptype].index(v) for v in enum.properties[p]]
     return enums
 
 
@@ -264,27 +380,23 @@ def _load_constants(data) -> dict[str, tuple[int, ...]]:
     return out
 
 
-def _load_classes(data, enums) -> dict[str, ClassDef]:
-    section = data["classes"]
-    if not isinstance(section, YMap):
-        raise error_at(data, "classes", "`classes` must map class names to definitions")
-    classes = {}
-    for cname, cdef in section.items():
-        _ident(section, cname, cname, "a class name")
-        if not isinstance(cdef, YMap):
-            raise error_at(section, cname, "a class needs `attributes`")
-        check_keys(cdef, {"attributes", "key", "position", "description"}, {"attributes"}, f"class {cname!r}")
-        attrs = {}
-        for aname, adef in (cdef["attributes"] or {}).items():
-            attrs[aname] = _load_attr(cdef["attributes"], aname, adef, enums)
-        for listed in ("key", "position"):
-            if listed in cdef and not (isinstance(cdef[listed], YList) and all(isinstance(a, str) for a in cdef[listed])):
-                raise error_at(cdef, listed, f"`{listed}` is a list of attribute names, e.g. [x, y, z]")
-            for i, a in enumerate(cdef.get(listed) or []):
-                if a not in attrs:
-                    raise error_at(cdef[listed], i, f"{a!r} is not an attribute of {cname!r}{suggest(str(a), attrs)}")
-        classes[cname] = ClassDef(cname, attrs, list(cdef.get("key") or []), list(cdef.get("position") or []))
-    return classes
+def _load_class(section, cname, enums) -> ClassDef:
+    cdef = section[cname]
+    if not isinstance(cdef, YMap):
+        raise error_at(section, cname, "a class needs `attributes`")
+    check_keys(cdef, {"attributes", "key", "position", "description", "override"}, {"attributes"}, f"class {cname!r}")
+    if not isinstance(cdef["attributes"], YMap):
+        raise error_at(cdef, "attributes", "`attributes` maps attribute names to types")
+    attrs = {}
+    for aname, adef in cdef["attributes"].items():
+        attrs[aname] = _load_attr(cdef["attributes"], aname, adef, enums)
+    for listed in ("key", "position"):
+        if listed in cdef and not (isinstance(cdef[listed], YList) and all(isinstance(a, str) for a in cdef[listed])):
+            raise error_at(cdef, listed, f"`{listed}` is a list of attribute names, e.g. [x, y, z]")
+        for i, a in enumerate(cdef.get(listed) or []):
+            if a not in attrs:
+                raise error_at(cdef[listed], i, f"{a!r} is not an attribute of {cname!r}{suggest(str(a), attrs)}")
+    return ClassDef(cname, attrs, list(cdef.get("key") or []), list(cdef.get("position") or []))
 
 
 def _load_attr(section, aname, adef, enums) -> AttrDef:
@@ -339,7 +451,7 @@ def _load_action(section, name, known_types) -> ActionDef:
     adef = section[name]
     if not isinstance(adef, YMap):
         raise error_at(section, name, "an action needs at least `effect`")
-    check_keys(adef, {"params", "let", "pre", "effect", "cost", "description"}, {"effect"}, f"action {name!r}")
+    check_keys(adef, {"params", "let", "pre", "effect", "cost", "description", "override"}, {"effect"}, f"action {name!r}")
     params = _param_list(adef, known_types)
     let_section = adef.get("let") or YMap()
     if not isinstance(let_section, YMap):

@@ -17,6 +17,9 @@ from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, orig
 
 DUNGEONS_DIR = Path(__file__).resolve().parent.parent / "dungeons"
 FACINGS_KEYS = ("facing", "looking", "selected")
+# Spec section 5; a domain may add lists of named objects (its `dungeon.lists`).
+DUNGEON_KEYS = {"dungeon", "domain", "description", "height", "legend", "map", "agent", "inventory", "rooms",
+                "goal", "extends"}
 
 
 @dataclass
@@ -90,8 +93,7 @@ def _read_with_extends(path: Path, seen: tuple = ()) -> YMap:
 def load_dungeon(ref: str | Path, domain: Domain | None = None) -> Dungeon:
     path = resolve_dungeon_path(ref)
     data = _read_with_extends(path)
-    check_keys(data, {"dungeon", "domain", "description", "height", "legend", "map", "agent", "inventory",
-                      "rooms", "goal", "extends"}, {"domain", "height", "legend", "map", "agent"}, "a dungeon")
+    check_keys(data, set(data) | DUNGEON_KEYS, {"domain", "height", "legend", "map", "agent"}, "a dungeon")
     if domain is None:
         dref = data["domain"]
         try:
@@ -272,34 +274,53 @@ class _Builder:
             dungeon.where[((icls.name, (slot,)), "key")] = (entry, "slot" if "slot" in entry else "item")
 
     def rooms(self, dungeon: Dungeon):
-        spec = self.binding.get("rooms")
-        rooms = self.data.get("rooms")
-        if not rooms:
+        lists = dict(self.binding.get("lists") or {})
+        if "rooms" in self.binding:
+            lists["rooms"] = self.binding["rooms"]
+        for key in self.data:
+            if key not in lists and key not in DUNGEON_KEYS:
+                raise error_at(self.data, key, f"unknown key {key!r} in a dungeon{suggest(str(key), set(DUNGEON_KEYS) | set(lists))}",
+                               on_key=True)
+        for key, spec in lists.items():
+            self.object_list(dungeon, key, spec)
+
+    def object_list(self, dungeon: Dungeon, key: str, spec):
+        """A list of named objects (`rooms`, or a domain's own, e.g. `animals`), each
+        {name, FIELD: value, ...}; a field fills one attribute, or several from a list."""
+        entries = self.data.get(key)
+        if not entries:
             return
-        if spec is None:
-            raise error_at(self.data, "rooms", "this domain has no rooms")
-        if not isinstance(rooms, YList):
-            raise error_at(self.data, "rooms", "`rooms` is a list of {name, color, x: [min, max], z: [min, max]}")
-        rcls = self.cls("rooms", spec["class"])
+        what = key[:-1] if key.endswith("s") else key
         fields = spec["fields"]
-        for i, room in enumerate(rooms):
-            if not isinstance(room, YMap):
-                raise error_at(rooms, i, "a room is {name, color, x: [min, max], z: [min, max]}")
-            check_keys(room, {"name", *fields}, {"name", *fields}, "a room")
-            name = room["name"]
+        required = set(spec.get("required", fields))
+        shape = ", ".join(["name", *fields])
+        if not isinstance(entries, YList):
+            raise error_at(self.data, key, f"`{key}` is a list of {{{shape}}}")
+        cls = self.domain.classes[spec["class"]]
+        for i, entry in enumerate(entries):
+            if not isinstance(entry, YMap):
+                raise error_at(entries, i, f"a {what} is {{{shape}}}")
+            check_keys(entry, {"name", *fields}, {"name", *required}, f"a {what}")
+            name = entry["name"]
             if not isinstance(name, str) or name in dungeon.objects:
-                raise error_at(room, "name", f"room name {name!r} must be a new name")
-            values = {a: adef.default for a, adef in rcls.attrs.items()}
-            for key, attrs in fields.items():
-                value = room[key]
+                raise error_at(entry, "name", f"{what} name {name!r} must be a new name")
+            values = {a: adef.default for a, adef in cls.attrs.items()}
+            for fkey, attrs in fields.items():
+                if fkey not in entry:
+                    continue
+                value = entry[fkey]
                 if isinstance(attrs, list):
                     if not isinstance(value, list) or len(value) != len(attrs) or \
                             not all(isinstance(v, int) and not isinstance(v, bool) for v in value):
-                        raise error_at(room, key, f"`{key}` is a list of {len(attrs)} numbers")
+                        raise error_at(entry, fkey, f"`{fkey}` is a list of {len(attrs)} numbers")
                     values.update(zip(attrs, value))
-                else:
-                    atype = rcls.attrs[attrs].type
-                    if atype in self.domain.enums and value not in self.domain.enums[atype].values:
-                        raise error_at(room, key, f"unknown {atype} {value!r}{suggest(str(value), self.domain.enums[atype].values)}")
-                    values[attrs] = value
-            dungeon.objects[name] = (rcls.name, values)
+                    continue
+                atype = cls.attrs[attrs].type
+                enum = self.domain.enums.get(atype)
+                if enum is not None and value not in enum.values:
+                    raise error_at(entry, fkey, f"unknown {atype} {value!r}{suggest(str(value), enum.values)}")
+                if atype == "bool" and not isinstance(value, bool) or \
+                        atype == "int" and (not isinstance(value, int) or isinstance(value, bool)):
+                    raise error_at(entry, fkey, f"`{fkey}` must be a {atype}")
+                values[attrs] = value
+            dungeon.objects[name] = (cls.name, values)

@@ -197,7 +197,7 @@ class Grounder:
             if node.name not in enum.properties:
                 raise ctx.error(node, f"type {otype!r} has no property {node.name!r}{suggest(node.name, enum.properties)}")
             table = tuple(enum.properties[node.name])
-            ptype = "bool" if isinstance(table[0], bool) else "int"
+            ptype = enum.prop_types.get(node.name, "int")
             if isinstance(obj, ir.Const):
                 return ir.Const(table[obj.value], ptype)
             return ir.Lookup(table, obj, ptype, f"{otype}.{node.name}")
