@@ -2,7 +2,8 @@
 
 Each column is drawn with the dungeon legend's character for the same blocks; a column
 an action changed into something the legend lacks is drawn `*`. The agent is an arrow
-for its facing (`^ v < >`, else `@`); with a plan, cells the agent visited are `o`.
+for its facing (`^ v < >`, else `@`); other named objects with a position are the
+initial of their name, upper case; with a plan, cells the agent visited are `o`.
 """
 from __future__ import annotations
 
@@ -24,12 +25,15 @@ def render(model: Model, state: bytes, path: list | None = None) -> str:
     glyphs = model.display.get("glyphs", {})
     ax, _, az = model.agent_position(state)
     visited = {(p[0], p[2]) for p in (path or [])}
+    others = {(x, z): name[0].upper() for name, x, z in model.display.get("objects", [])}
     rows = []
     for z in range(g.depth):
         row = []
         for x in range(g.width):
             if (x, z) == (ax, az):
                 row.append(ARROWS.get(facing_name(model, state) or "", "@"))
+            elif (x, z) in others:
+                row.append(others[(x, z)])
             elif (x, z) in visited:
                 row.append("o")
             else:

@@ -224,4 +224,10 @@ def _display(d: Dungeon, layout) -> dict:
         by_value = {v: k for k, v in adef.names.items()}
         facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
                   "value": d.objects[d.agent_name][1].get(attr), "names": by_value}
-    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default}
+    # Other named objects with a position (e.g. a domain's animals) are drawn by initial.
+    objects = []
+    for name, (cls, values) in d.objects.items():
+        pos = d.domain.classes[cls].position
+        if name != d.agent_name and len(pos) == 3:
+            objects.append((name, values.get(pos[0]), values.get(pos[2])))
+    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default, "objects": objects}

@@ -245,7 +245,7 @@ def _check_binding(data, b, classes) -> None:
     lists = b.get("lists")
     if lists is not None:
         if not isinstance(lists, YMap):
-            raise error_at(b, "lists", "`lists` maps dungeon keys (e.g. animals) to {class, fields}")
+            raise error_at(b, "lists", "`lists` maps dungeon keys to {class, fields}: lists of named objects")
         parts += [(name, lists, ("fields",)) for name in lists]
     for part, container, keys in parts:
         spec = container.get(part)

@@ -285,7 +285,7 @@ class _Builder:
             self.object_list(dungeon, key, spec)
 
     def object_list(self, dungeon: Dungeon, key: str, spec):
-        """A list of named objects (`rooms`, or a domain's own, e.g. `animals`), each
+        """A list of named objects (`rooms`, or one the domain declares in `dungeon.lists`), each
         {name, FIELD: value, ...}; a field fills one attribute, or several from a list."""
         entries = self.data.get(key)
         if not entries:
