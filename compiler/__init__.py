@@ -224,7 +224,7 @@ def _display(d: Dungeon, layout) -> dict:
         by_value = {v: k for k, v in adef.names.items()}
         facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
                   "value": d.objects[d.agent_name][1].get(attr), "names": by_value}
-    # Other named objects with a position (e.g. a domain's animals) are drawn by initial.
+    # Other named objects with a position are drawn by the initial of their name.
     objects = []
     for name, (cls, values) in d.objects.items():
         pos = d.domain.classes[cls].position
