@@ -130,8 +130,12 @@ def _progress():
 @click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help="Stop after this many seconds.")
 @click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help="Stop when the process uses this much memory [default: half the RAM].")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE, one action a line (atomically).")
+@click.option("--model", "learner", type=click.Choice(["tabular", "oo"]), default=None, help="rmax: the model learner.")
+@click.option("--episodes", type=click.IntRange(min=1), default=None, help="Learning solvers: number of episodes.")
+@click.option("--seed", type=int, default=None, help="Learning solvers: random seed.")
 @goal_option
-def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, goal):
+def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, learner,
+              episodes, seed, goal):
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
     from .solvers import Budget, get_solver
     from .solvers.heuristics import HEURISTICS
@@ -148,6 +152,20 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
         if solver not in ("astar", "wastar"):
             raise BccError("--weight applies to astar and wastar only")
         options["weight"] = weight
+    learning = solver in ("rmax", "qlearning")
+    if (learner or episodes or seed is not None) and not learning:
+        raise BccError("--model, --episodes and --seed apply to the learning solvers (rmax, qlearning)")
+    if learner:
+        if solver != "rmax":
+            raise BccError("--model applies to rmax only")
+        options["learner"] = learner
+    if episodes:
+        options["episodes"] = episodes
+    if seed is not None:
+        options["seed"] = seed
+    if learning:  # converged_episode compares with the optimal cost, found by A*
+        reference = get_solver("astar")(model, Budget(time_limit=60, max_memory_mb=Budget.default().max_memory_mb))
+        options["optimal_cost"] = reference.cost if reference.solved else None
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
@@ -160,7 +178,8 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     if as_json:
         _emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
     elif result.solved:
-        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {len(result.plan)} steps, "
+        steps = f"{len(result.plan)} step" + ("" if len(result.plan) == 1 else "s")
+        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {steps}, "
                    f"{result.expanded:,} expanded, {result.seconds:.3f} s")
         for a in result.plan:
             click.echo(a)

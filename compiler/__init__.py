@@ -120,8 +120,17 @@ def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
 
 
 def _check_keyed_objects(g: Grounder, d: Dungeon) -> None:
-    """Objects a dungeon gives by key (inventory slots) must exist in their class's key range."""
+    """Objects a dungeon gives by key (inventory slots) must exist in their class's key range,
+    and every integer a dungeon gives a named object must lie in its attribute's range."""
     from .source import error_at
+    for name, (cls, values) in d.objects.items():
+        cdef = d.domain.classes[cls]
+        for attr, value in values.items():
+            rng = g.attr_range(cdef, attr) if cdef.attrs[attr].type == "int" else None
+            if rng is not None and not rng[0] <= value <= rng[1]:
+                where = d.where.get((name, attr))
+                message = f"{name}.{attr} = {value} is outside its range [{rng[0]}, {rng[1]}]"
+                raise error_at(*where, message) if where else BccError(message, d.path)
     for cls, objects in d.keyed.items():
         valid = set(g.keys_of(cls))
         for key in objects:

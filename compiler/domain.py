@@ -40,6 +40,7 @@ class EnumType:
     ids: list[int]                        # dense index -> external id
     properties: dict[str, list]           # property -> value per dense index
     prop_types: dict = field(default_factory=dict)  # property -> "bool" | "int" | an enumeration name
+    prop_defaults: dict = field(default_factory=dict)  # property -> its declared default
 
     def index(self, name: str) -> int:
         return self.values.index(name)
@@ -289,7 +290,7 @@ def _ident(container, key, value, what: str) -> str:
 def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
     """Enumerations; a type the base domain has already gets the new values appended."""
     enums = {name: EnumType(e.name, list(e.values), list(e.ids), {p: list(v) for p, v in e.properties.items()},
-                            dict(e.prop_types)) for name, e in inherited.items()}
+                            dict(e.prop_types), dict(e.prop_defaults)) for name, e in inherited.items()}
     if section is None:
         return enums
     if not isinstance(section, YMap):
@@ -299,7 +300,7 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
         if tname in BUILTIN_TYPES:
             raise error_at(section, tname, f"{tname!r} is a built-in type", on_key=True)
         if tname not in enums:
-            enums[tname] = EnumType(tname, [], [], {}, {})
+            enums[tname] = EnumType(tname, [], [], {}, {}, {})
     pending = []
     for tname, tdef in section.items():
         if not isinstance(tdef, YMap):
@@ -326,6 +327,7 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
             else:
                 raise error_at(props, p, "a property default is true/false, a number, or {type: T, default: V}")
             enum.properties[p] = [defaults[p]] * len(enum.values)
+            enum.prop_defaults[p] = defaults[p]
         values = tdef["values"]
         if isinstance(values, YList):
             items = [(v, YMap()) for v in values]
@@ -350,7 +352,7 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
             enum.values.append(str(vname))
             enum.ids.append(vid)
             for p in enum.properties:
-                default = defaults.get(p, enum.properties[p][0] if enum.properties[p] else None)
+                default = defaults[p] if p in defaults else enum.prop_defaults.get(p)
                 v = vdef.get(p, default)
                 pending.append((enum, p, v, vdef if p in vdef else None))
                 enum.properties[p].append(v)

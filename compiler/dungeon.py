@@ -291,6 +291,7 @@ class _Builder:
         if not entries:
             return
         what = key[:-1] if key.endswith("s") else key
+        article = "an" if what[:1] in "aeiou" else "a"
         fields = spec["fields"]
         required = set(spec.get("required", fields))
         shape = ", ".join(["name", *fields])
@@ -299,8 +300,8 @@ class _Builder:
         cls = self.domain.classes[spec["class"]]
         for i, entry in enumerate(entries):
             if not isinstance(entry, YMap):
-                raise error_at(entries, i, f"a {what} is {{{shape}}}")
-            check_keys(entry, {"name", *fields}, {"name", *required}, f"a {what}")
+                raise error_at(entries, i, f"{article} {what} is {{{shape}}}")
+            check_keys(entry, {"name", *fields}, {"name", *required}, f"{article} {what}")
             name = entry["name"]
             if not isinstance(name, str) or name in dungeon.objects:
                 raise error_at(entry, "name", f"{what} name {name!r} must be a new name")
@@ -314,6 +315,8 @@ class _Builder:
                             not all(isinstance(v, int) and not isinstance(v, bool) for v in value):
                         raise error_at(entry, fkey, f"`{fkey}` is a list of {len(attrs)} numbers")
                     values.update(zip(attrs, value))
+                    for attr in attrs:
+                        dungeon.where[(name, attr)] = (entry, fkey)
                     continue
                 atype = cls.attrs[attrs].type
                 enum = self.domain.enums.get(atype)
@@ -323,4 +326,5 @@ class _Builder:
                         atype == "int" and (not isinstance(value, int) or isinstance(value, bool)):
                     raise error_at(entry, fkey, f"`{fkey}` must be a {atype}")
                 values[attrs] = value
+                dungeon.where[(name, attrs)] = (entry, fkey)
             dungeon.objects[name] = (cls.name, values)

@@ -27,7 +27,8 @@ _SPELLING = {
 @lru_cache(maxsize=1)
 def _parser() -> Lark:
     return Lark(GRAMMAR_FILE.read_text(encoding="utf-8"), start=["start_expr", "start_effects"],
-                parser="lalr", propagate_positions=True, maybe_placeholders=True)
+                parser="lalr", propagate_positions=True, maybe_placeholders=True,
+                cache=True)  # lark keys its cache on the grammar text: a changed grammar rebuilds
 
 
 def _spell(terminal: str) -> str:

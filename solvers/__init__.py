@@ -18,6 +18,8 @@ BUILTIN = {
     "wastar": ("bcc.solvers.astar:solve_weighted", "weighted A*, f = g + w h (--weight, default 2; cost <= w x optimal)"),
     "gbfs": ("bcc.solvers.gbfs:solve", "greedy best-first search (fast, not optimal)"),
     "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
+    "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning (--model tabular|oo, --episodes, --seed)"),
+    "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline (--episodes, --seed)"),
 }
 
 __all__ = ["Budget", "Result", "get_solver", "list_solvers"]

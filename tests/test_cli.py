@@ -57,7 +57,7 @@ def test_validate_says_which_step_fails_and_why(tmp_path):
     assert result.exit_code == 1
     data = json.loads(result.stdout)
     assert data["valid"] is False and data["failed_step"] == 3
-    assert "solid" in data["message"]
+    assert "passable(tx, a.y, tz)" in data["message"]  # the wall at foot level
 
 
 def test_validate_incomplete_plan_exits_1(tmp_path):
@@ -127,7 +127,7 @@ def test_show_draws_agent_and_path(tmp_path):
 def test_list_and_solvers():
     data = json.loads(run("list", "--json").stdout)
     assert set(REFERENCE) <= {d["name"] for d in data["dungeons"]}
-    assert data["domains"] == ["minecraft"]
+    assert data["domains"] == ["farm", "minecraft"]
     assert {"bfs", "astar"} <= set(json.loads(run("solvers", "--json").stdout)["solvers"])
 
 

@@ -157,3 +157,19 @@ def test_override_replaces_by_name(tmp_path):
     model = compile_dungeon(_domain(tmp_path, text))
     s = model.apply(model.action_index("rotate_left"), model.initial)
     assert model.decode(s)["agent.rotationalDirection"] == 3  # north (2) + 1 = east
+
+
+def test_added_enum_values_take_declared_property_defaults():
+    from bcc.compiler.domain import load_domain
+    enum = load_domain(ROOT / "domains" / "farm.yaml").enums["blocktype"]
+    wheat = enum.index("wheat")
+    assert enum.properties["fillable"][wheat] is False and enum.properties["solid"][wheat] is False
+
+
+def test_listed_object_positions_are_checked(tmp_path):
+    text = (ROOT / "dungeons" / "pasture.yaml").read_text().replace("at: [4, 1, 3]", "at: [40, 1, 3]")
+    (tmp_path / "p.yaml").write_text(text)
+    with pytest.raises(BccError) as err:
+        compile_dungeon(tmp_path / "p.yaml")
+    line = next(i for i, l in enumerate(text.splitlines(), 1) if "name: daisy" in l)
+    assert "daisy.x = 40 is outside its range [0, 8]" in err.value.message and err.value.line == line
