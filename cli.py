@@ -315,3 +315,61 @@ def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_
                     "loops": loops, "seed": seed, "yaml": None if output else text})
     elif not output:
         click.echo(text, nl=False)
+
+
+@main.command("learn-curve")
+@click.argument("dungeon")
+@click.option("--solver", default="rmax", show_default=True, help="A learning solver: rmax or qlearning.")
+@click.option("--episodes", type=click.IntRange(min=1), default=10, show_default=True)
+@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write a PNG plot (needs the `plot` extra).")
+@json_option
+@goal_option
+def learn_curve_cmd(dungeon, solver, episodes, seed, output, as_json, goal):
+    """Steps per episode of a learning solver, for each model learner (rmax: tabular and oo)."""
+    from .solvers import Budget, get_solver
+    if solver not in ("rmax", "qlearning"):
+        raise BccError("learn-curve takes a learning solver: rmax or qlearning")
+    model = _compile(dungeon, goal)
+    budget = Budget.default()
+    optimal = get_solver("astar")(model, budget)
+    runs = {}
+    for learner in (["tabular", "oo"] if solver == "rmax" else [None]):
+        options = {"learner": learner} if learner else {}
+        result = get_solver(solver)(model, budget, episodes=episodes, seed=seed,
+                                    optimal_cost=optimal.cost if optimal.solved else None, **options)
+        runs[f"{solver}/{learner}" if learner else solver] = {
+            "steps": [e["steps"] for e in result.episodes], "converged_episode": result.converged_episode}
+    if output:
+        _plot_curves(runs, optimal.cost if optimal.solved else None, f"{model.name}: steps per episode", output)
+    if as_json:
+        _emit_json({"dungeon": model.name, "optimal_cost": optimal.cost, "runs": runs})
+        return
+    click.echo(f"{model.name}: optimal cost {optimal.cost}")
+    for name, run in runs.items():
+        click.echo(f"  {name:<16} converged at episode {run['converged_episode']}: steps {run['steps']}")
+
+
+def _plot_curves(runs: dict, optimal, title: str, output: str) -> None:
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        raise BccError('plotting needs matplotlib: pip install "bcc[plot]"') from None
+    import io
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for name, run in runs.items():
+        ax.plot(range(1, len(run["steps"]) + 1), run["steps"], marker="o", label=name)
+    if optimal is not None:
+        ax.axhline(optimal, color="gray", linestyle="--", label=f"optimal ({optimal})")
+    ax.set_xlabel("episode")
+    ax.set_ylabel("steps")
+    ax.set_yscale("log")
+    ax.set_title(title)
+    ax.legend()
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100)
+    plt.close(fig)
+    from .atomic import write_bytes
+    write_bytes(output, buf.getvalue())

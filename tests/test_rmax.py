@@ -58,3 +58,14 @@ def test_cli_reports_episodes_and_convergence():
     assert data["converged_episode"] is not None
     bad = CliRunner().invoke(main, ["solve", "grid", "--model", "oo"])
     assert bad.exit_code == 2
+
+
+def test_learn_curve_reports_both_learners(tmp_path):
+    result = CliRunner().invoke(main, ["learn-curve", "grid", "--episodes", "4", "--json"], catch_exceptions=False)
+    data = json.loads(result.stdout)
+    assert set(data["runs"]) == {"rmax/tabular", "rmax/oo"} and data["optimal_cost"] == 7
+    assert all(len(run["steps"]) == 4 for run in data["runs"].values())
+    pytest.importorskip("matplotlib")
+    png = tmp_path / "curve.png"
+    assert CliRunner().invoke(main, ["learn-curve", "grid", "--episodes", "3", "-o", str(png)]).exit_code == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
