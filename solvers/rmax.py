@@ -216,7 +216,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             values = [q(s, k) for k in range(len(actions))]
             best = max(values)
             a = actions[rng.choice([k for k, v in enumerate(values) if v >= best - 1e-9])]
-            known_before = know.predict(s, a) is not None
+            predicted = know.predict(s, a)
             n = _world(model, s, a)
             know.observe(s, a, n)
             plan.append(a)
@@ -233,7 +233,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             kind = "goal" if model.is_goal(s) else ("dead" if model.is_failure(s) else None)
             if kind is not None:
                 break
-            if not known_before:  # the model changed: plan again
+            if predicted != n:  # new knowledge, or a wrong prediction: plan again
                 q = _plan_values(model, know, s, actions, gamma, delta, dead_value)
         history.append({"episode": episode + 1, "steps": len(plan), "return": ret, "success": kind == "goal"})
         last_plan = plan if kind == "goal" else []
