@@ -75,7 +75,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
 
     @functools.lru_cache(maxsize=1)
     def pattern_database():
-        return patterns.build(layout, actions, search, goal_ir, reach, n_values, position_vars)
+        return patterns.build(layout, actions, search, goal_ir, reach, n_values, position_vars, initial)
 
     report = {
         "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,

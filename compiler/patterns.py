@@ -69,7 +69,7 @@ def _top_sets(effects):
             yield e
 
 
-def build(layout, actions, candidates, goal, reach, n_values, position_vars) -> PatternDatabase | None:
+def build(layout, actions, candidates, goal, reach, n_values, position_vars, initial: bytes) -> PatternDatabase | None:
     an = Analysis(layout, n_values)
     pattern = choose_pattern(layout, [actions[i] for i in candidates], position_vars, an)
     if not pattern:
@@ -91,7 +91,13 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars) -> 
     goals = []
     base = dict(reach.values)
     cell, layer = an.cells(reach.written)
-    for values in itertools.product(*ranges):
+    # Only abstract states reachable from the start's are built: every real state the
+    # search can meet maps to one of them (the others keep distance infinity, never read).
+    start = tuple(initial[s.index] + s.lo for s in slots)
+    seen = {flat(start)}
+    queue = [start]
+    while queue:
+        values = queue.pop()
         sets = dict(base)
         sets.update({var: frozenset({v}) for var, v in zip(pattern, values)})
         here = flat(values)
@@ -107,6 +113,9 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars) -> 
                 there = flat(nxt)
                 if there != here:
                     reverse[there].append((here, a.cost))
+                    if there not in seen:
+                        seen.add(there)
+                        queue.append(nxt)
     dist = [math.inf] * n_states
     heap = [(0, g) for g in goals]
     for g in goals:
