@@ -25,24 +25,16 @@ class GroundAction:
     effects: tuple      # IR effects
 
 
-def _locals_in(node, acc: set) -> set:
-    if isinstance(node, ir.Local):
-        acc.add(node.name)
-    for child in ir.children(node):
-        _locals_in(child, acc)
-    return acc
-
-
 def _effect_locals(effects, acc: set) -> set:
     for e in effects:
         if isinstance(e, ir.When):
-            _locals_in(e.cond, acc)
+            acc |= ir.locals_of(e.cond)
             _effect_locals(e.then, acc)
             _effect_locals(e.orelse, acc)
         else:
             for part in vars(e).values():
                 if not isinstance(part, (ir.StateVar, str)):
-                    _locals_in(part, acc)
+                    acc |= ir.locals_of(part)
     return acc
 
 
@@ -269,12 +261,12 @@ class Emitter:
                 if name in done or name not in defs:
                     continue
                 loc, value = defs[name]
-                yield from need(_locals_in(value, set()))
+                yield from need(ir.locals_of(value))
                 done.add(name)
                 yield "let", f"v_{loc.name} = {self.ex(value)}"
 
         for cond in a.pre:
-            yield from need(_locals_in(cond, set()))
+            yield from need(ir.locals_of(cond))
             yield "pre", self.ex(cond)
         yield from need(_effect_locals(a.effects, set()))
 

@@ -282,14 +282,11 @@ class Grounder:
             return self.call_by_type(node, ctx, fdef, bound, by_type)
         inner = Ctx(fdef.body, bound, ctx.stack + (node.func,))
         try:
-            return self.bool_or_value(fdef.body.node, inner)
+            return self.expr(fdef.body.node, inner)
         except BccError as exc:
             if exc.path == fdef.body.where.path and ctx.src.where.path != exc.path:
                 exc.message += f" (in {node.func}, called at {ctx.src.where.path}:{ctx.src.where.locate(*node.pos)[0]})"
             raise
-
-    def bool_or_value(self, node, ctx):
-        return self.expr(node, ctx)
 
     def call_by_type(self, node, ctx, fdef, bound, by_type):
         """f(..., T, ...) where f wants a keyed object and T is a value of its value attribute:

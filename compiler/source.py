@@ -8,6 +8,7 @@ module hands out is 1-based.
 from __future__ import annotations
 
 import difflib
+import functools
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -41,16 +42,14 @@ class SourceFile:
     path: str
     text: str
 
+    @functools.cached_property
     def line_starts(self) -> list:
+        """Offsets where each line begins (computed once per file, used for every scalar)."""
         starts, pos = [0], 0
         for line in self.text.splitlines(keepends=True):
             pos += len(line)
             starts.append(pos)
         return starts
-
-    def line_text(self, line: int) -> str:
-        lines = self.text.splitlines()
-        return lines[line - 1] if 0 < line <= len(lines) else ""
 
 
 @dataclass(frozen=True)
@@ -206,7 +205,7 @@ def _align(src: SourceFile, node, value: str) -> tuple:
     indentation, escape sequences); a character not found nearby maps to where we are."""
     text = src.text
     start, end = node.start_mark.index, node.end_mark.index
-    starts = src.line_starts()
+    starts = src.line_starts
     out, i = [], start
     for ch in value:
         j = i
