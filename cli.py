@@ -44,16 +44,16 @@ class BccGroup(click.Group):
             ctx.exit(EXIT_INTERNAL)
 
 
-def _emit_json(data) -> None:
+def emit_json(data) -> None:
     click.echo(json.dumps(data, indent=2, default=str))
 
 
-def _compile(dungeon: str, goal: str | None):
+def compile_model(dungeon: str, goal: str | None):
     from .compiler import compile_dungeon
     return compile_dungeon(dungeon, goal=goal)
 
 
-def _write(path: str, text: str) -> None:
+def write_output(path: str, text: str) -> None:
     from .atomic import write_text
     write_text(path, text)
 
@@ -84,14 +84,14 @@ def main():
 @goal_option
 def compile_cmd(dungeon, as_json, output, emit_python, goal):
     """Parse, type-check and compile DUNGEON (a file or a shipped name); report the model."""
-    model = _compile(dungeon, goal)
+    model = compile_model(dungeon, goal)
     report = dict(model.report, action_names=list(model.action_names))
     if output:
-        _write(output, json.dumps(report, indent=2) + "\n")
+        write_output(output, json.dumps(report, indent=2) + "\n")
     if emit_python:
-        _write(emit_python, model.source)
+        write_output(emit_python, model.source)
     if as_json:
-        _emit_json(report)
+        emit_json(report)
         return
     r = report
     click.echo(f"dungeon {r['dungeon']} (domain {r['domain']}): "
@@ -111,7 +111,7 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal):
     click.echo(f"goal: {r['goal']}")
 
 
-def _progress():
+def progress_enabled():
     if not sys.stderr.isatty():
         return None
 
@@ -139,7 +139,7 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
     from .solvers import Budget, get_solver
     from .solvers.heuristics import HEURISTICS
-    model = _compile(dungeon, goal)
+    model = compile_model(dungeon, goal)
     solve = get_solver(solver)
     options = {}
     if heuristic is not None:
@@ -169,14 +169,14 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
-    progress = _progress()
+    progress = progress_enabled()
     result = solve(model, budget, progress=progress, **options)
     if progress:
         click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
     if output and result.solved:
-        _write(output, "".join(a + "\n" for a in result.plan))
+        write_output(output, "".join(a + "\n" for a in result.plan))
     if as_json:
-        _emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
+        emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
     elif result.solved:
         steps = f"{len(result.plan)} step" + ("" if len(result.plan) == 1 else "s")
         click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {steps}, "
@@ -213,11 +213,11 @@ def validate_cmd(dungeon, plan, as_json, goal):
 
     Exit 0 when it reaches the goal, 1 when it does not (saying at which step and why)."""
     from .simulate import replay
-    model = _compile(dungeon, goal)
+    model = compile_model(dungeon, goal)
     actions, path = _read_plan_arg(plan)
     result = replay(model, actions, path)
     if as_json:
-        _emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
+        emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
     else:
         click.echo(("valid: " if result.valid else "invalid: ") + result.message)
     sys.exit(EXIT_OK if result.valid else EXIT_NO_SOLUTION)
@@ -232,7 +232,7 @@ def show_cmd(dungeon, plan, as_json, goal):
     """Draw DUNGEON from above (rows are z, columns x), optionally with a plan's path."""
     from .render import render
     from .simulate import replay
-    model = _compile(dungeon, goal)
+    model = compile_model(dungeon, goal)
     state, path, note = model.initial, None, None
     if plan:
         actions, ppath = _read_plan_arg(plan)
@@ -242,7 +242,7 @@ def show_cmd(dungeon, plan, as_json, goal):
         note = ("valid: " if result.valid else "invalid: ") + result.message
     picture = render(model, state, path)
     if as_json:
-        _emit_json({"dungeon": model.name, "goal": model.goal_text, "rows": picture.splitlines(),
+        emit_json({"dungeon": model.name, "goal": model.goal_text, "rows": picture.splitlines(),
                     "agent": list(model.agent_position(state)), "path": [list(p) for p in path or []],
                     "plan_note": note})
         return
@@ -266,7 +266,7 @@ def list_cmd(as_json):
                          "description": " ".join(str(data.get("description", "")).split())})
     domains = sorted(p.stem for p in DOMAINS_DIR.glob("*.yaml"))
     if as_json:
-        _emit_json({"dungeons": dungeons, "domains": domains})
+        emit_json({"dungeons": dungeons, "domains": domains})
         return
     click.echo("dungeons:")
     for d in dungeons:
@@ -283,7 +283,7 @@ def solvers_cmd(as_json):
     from .solvers import list_solvers
     solvers = list_solvers()
     if as_json:
-        _emit_json({"solvers": solvers})
+        emit_json({"solvers": solvers})
         return
     for name, doc in solvers.items():
         click.echo(f"  {name:<8} {doc}")
@@ -309,9 +309,9 @@ def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_
     from .generate import generate_maze
     text = generate_maze(width, depth, stones=stones, lava=lava, loops=loops, seed=seed, name=name)
     if output:
-        _write(output, text)
+        write_output(output, text)
     if as_json:
-        _emit_json({"output": output, "width": width, "depth": depth, "stones": stones, "lava": lava,
+        emit_json({"output": output, "width": width, "depth": depth, "stones": stones, "lava": lava,
                     "loops": loops, "seed": seed, "yaml": None if output else text})
     elif not output:
         click.echo(text, nl=False)
@@ -330,7 +330,7 @@ def learn_curve_cmd(dungeon, solver, episodes, seed, output, as_json, goal):
     from .solvers import Budget, get_solver
     if solver not in ("rmax", "qlearning"):
         raise BccError("learn-curve takes a learning solver: rmax or qlearning")
-    model = _compile(dungeon, goal)
+    model = compile_model(dungeon, goal)
     budget = Budget.default()
     optimal = get_solver("astar")(model, budget)
     runs = {}
@@ -343,7 +343,7 @@ def learn_curve_cmd(dungeon, solver, episodes, seed, output, as_json, goal):
     if output:
         _plot_curves(runs, optimal.cost if optimal.solved else None, f"{model.name}: steps per episode", output)
     if as_json:
-        _emit_json({"dungeon": model.name, "optimal_cost": optimal.cost, "runs": runs})
+        emit_json({"dungeon": model.name, "optimal_cost": optimal.cost, "runs": runs})
         return
     click.echo(f"{model.name}: optimal cost {optimal.cost}")
     for name, run in runs.items():
@@ -373,3 +373,22 @@ def _plot_curves(runs: dict, optimal, title: str, output: str) -> None:
     plt.close(fig)
     from .atomic import write_bytes
     write_bytes(output, buf.getvalue())
+
+
+# Feature commands live beside their code (pddl_io/, grounding/, serve/, batch/, minecraft/);
+# each exposes `COMMANDS`, a list of click commands, and imports its heavy dependencies lazily.
+def _add_feature_commands() -> None:
+    import importlib
+    for module in ("pddl_io.commands", "grounding.commands", "serve.commands", "batch.commands",
+                   "minecraft.commands"):
+        try:
+            mod = importlib.import_module(f"{__package__}.{module}")
+        except ModuleNotFoundError as exc:
+            if exc.name != f"{__package__}.{module}":
+                raise
+            continue
+        for command in mod.COMMANDS:
+            main.add_command(command)
+
+
+_add_feature_commands()
