@@ -79,7 +79,7 @@ def main():
 @main.command("compile")
 @click.argument("dungeon")
 @json_option
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the JSON report to FILE (atomically).")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the compiled model as JSON (format bcc-model/1, the report included) to FILE, atomically.")
 @click.option("--emit-python", type=click.Path(dir_okay=False, writable=True), help="Write the generated successor code to FILE.")
 @goal_option
 def compile_cmd(dungeon, as_json, output, emit_python, goal):
@@ -87,7 +87,8 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal):
     model = compile_model(dungeon, goal)
     report = dict(model.report, action_names=list(model.action_names))
     if output:
-        write_output(output, json.dumps(report, indent=2) + "\n")
+        from .model_json import model_json
+        write_output(output, json.dumps(model_json(model), indent=2) + "\n")
     if emit_python:
         write_output(emit_python, model.source)
     if as_json:
@@ -133,9 +134,10 @@ def progress_enabled():
 @click.option("--model", "learner", type=click.Choice(["tabular", "oo"]), default=None, help="rmax: the model learner.")
 @click.option("--episodes", type=click.IntRange(min=1), default=None, help="Learning solvers: number of episodes.")
 @click.option("--seed", type=int, default=None, help="Learning solvers: random seed.")
+@click.option("--fd-search", metavar="CONFIG", default=None, help="fd: Fast Downward search [default: astar(lmcut())].")
 @goal_option
 def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, learner,
-              episodes, seed, goal):
+              episodes, seed, fd_search, goal):
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
     from .solvers import Budget, get_solver
     from .solvers.heuristics import HEURISTICS
@@ -152,6 +154,10 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
         if solver not in ("astar", "wastar"):
             raise BccError("--weight applies to astar and wastar only")
         options["weight"] = weight
+    if fd_search is not None:
+        if solver != "fd":
+            raise BccError("--fd-search applies to the fd solver only")
+        options["search"] = fd_search
     learning = solver in ("rmax", "qlearning")
     if (learner or episodes or seed is not None) and not learning:
         raise BccError("--model, --episodes and --seed apply to the learning solvers (rmax, qlearning)")

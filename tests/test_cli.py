@@ -102,7 +102,10 @@ def test_compile_report_and_atomic_output(tmp_path):
     result = run("compile", "bridge", "--json", "-o", str(out))
     assert result.exit_code == 0
     report = json.loads(result.stdout)
-    assert report == json.loads(out.read_text())
+    written = json.loads(out.read_text())  # the model itself (see model_json.py), report included
+    assert written["format"] == "bcc-model/1" and written["report"]["grounded_actions"] == report["grounded_actions"]
+    assert len(written["initial"]) == written["state_bytes"]
+    assert [a["name"] for a in written["actions"]][:2] == ["move_forward", "rotate_left"]
     assert report["grounded_actions"] == 8
     assert set(report["action_schemas"]) == {"move_forward", "rotate_left", "rotate_right", "look_down",
                                              "look_ahead", "change_item", "destroy_block", "place_block"}

@@ -1,0 +1,92 @@
+"""`bcc export pddl` and `bcc import pddl`: the PDDL edge of the command line."""
+from __future__ import annotations
+
+import os
+import sys
+
+import click
+
+from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, goal_option, json_option, progress_enabled
+
+
+@click.group("export")
+def export_group():
+    """Export a compiled dungeon to other formats."""
+
+
+@export_group.command("pddl")
+@click.argument("dungeon")
+@click.option("-o", "--output", "out_dir", required=True, type=click.Path(file_okay=False),
+              help="Directory for domain.pddl and problem.pddl (created if missing).")
+@click.option("--max-states", type=click.IntRange(min=1), default=None,
+              help="Reachable states the export may enumerate to find each variable's values [default: 300000].")
+@json_option
+@goal_option
+def export_pddl_cmd(dungeon, out_dir, max_states, as_json, goal):
+    """Write DUNGEON as grounded STRIPS PDDL: DIR/domain.pddl and DIR/problem.pddl."""
+    from ..atomic import write_text
+    from .task import build_task
+    from .writer import domain_text, problem_text
+    model = compile_model(dungeon, goal)
+    task = build_task(model, max_states)
+    os.makedirs(out_dir, exist_ok=True)
+    files = {}
+    for name, text in (("domain.pddl", domain_text(task)), ("problem.pddl", problem_text(task))):
+        path = os.path.join(out_dir, name)
+        write_text(path, text)
+        files[name] = {"path": path, "bytes": len(text.encode())}
+    info = {"dungeon": model.name, "goal": model.goal_text, **task.stats, "action_costs": task.use_costs,
+            "files": files}
+    if as_json:
+        emit_json(info)
+        return
+    click.echo(f"wrote {files['domain.pddl']['path']} and {files['problem.pddl']['path']}: "
+               f"{task.stats['operators']} operators over {task.stats['facts']} facts "
+               f"({task.stats['reachable_states']:,} reachable states enumerated)")
+
+
+@click.group("import")
+def import_group():
+    """Import problems from other formats and solve them with bcc's solvers."""
+
+
+@import_group.command("pddl")
+@click.argument("domain", type=click.Path(dir_okay=False))
+@click.argument("problem", type=click.Path(dir_okay=False))
+@click.option("--solver", default="astar", show_default=True, help="A bcc solver (see `bcc solvers`).")
+@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS")
+@click.option("--max-states", type=click.IntRange(min=1))
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE.")
+@json_option
+def import_pddl_cmd(domain, problem, solver, time_limit, max_states, output, as_json):
+    """Compile a STRIPS PDDL DOMAIN + PROBLEM into a bcc model and solve it.
+
+    The plan is printed in PDDL form, one `(action arg ...)` a line."""
+    from ..atomic import write_text
+    from ..solvers import Budget, get_solver
+    from .importer import import_pddl
+    model = import_pddl(domain, problem)
+    default = Budget.default()
+    budget = Budget(max_states=max_states, time_limit=time_limit, max_memory_mb=default.max_memory_mb)
+    progress = progress_enabled()
+    result = get_solver(solver)(model, budget, progress=progress)
+    if progress:
+        click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+    if output and result.solved:
+        write_text(output, "".join(a + "\n" for a in result.plan))
+    if as_json:
+        emit_json({"problem": model.name, "atoms": model.report["atoms"],
+                   "grounded_actions": model.report["grounded_actions"], **result.to_json()})
+    elif result.solved:
+        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, "
+                   f"{model.report['grounded_actions']} grounded actions, {model.report['atoms']} atoms")
+        for a in result.plan:
+            click.echo(a)
+    else:
+        click.echo(f"not solved: {result.message}")
+    if not result.solved:
+        click.echo(f"{problem}: {result.message}", err=True)
+    sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
+
+
+COMMANDS = [export_group, import_group]

@@ -1,0 +1,121 @@
+"""Fast Downward on an export: the `fd` solver (a plugin, entry point `bcc.solvers`).
+
+Why a subprocess: Fast Downward is a C++ planner; the PyPI package `up-fast-downward`
+ships its driver `fast-downward.py` and a release build. We export the model (task.py),
+run the driver on the two files, and map the plan's operators back to canonical bcc
+actions, so the result is an ordinary bcc `Result` (and `bcc validate` replays it).
+
+The search configuration is the `search` option, else the environment variable
+`BCC_FD_SEARCH`, else `astar(lmcut())` (optimal).
+"""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import BccError
+
+DEFAULT_SEARCH = "astar(lmcut())"
+INSTALL_HINT = 'Fast Downward is not installed: pip install "bcc[pddl]" (the PyPI package up-fast-downward)'
+
+
+def driver() -> Path:
+    """The path of fast-downward.py, or BccError with the install hint."""
+    try:
+        import importlib.resources
+        import up_fast_downward  # noqa: F401
+        path = Path(str(importlib.resources.files("up_fast_downward").joinpath("downward/fast-downward.py")))
+    except ImportError:
+        raise BccError(INSTALL_HINT) from None
+    if not path.exists():
+        raise BccError(INSTALL_HINT + f" ({path} is missing)")
+    return path
+
+
+def available() -> bool:
+    try:
+        driver()
+        return True
+    except BccError:
+        return False
+
+
+@dataclass
+class FdRun:
+    solved: bool
+    plan: list          # operator names as Fast Downward printed them
+    cost: int | None
+    seconds: float
+    status: str         # "solved" | "no_solution" | "budget" | "error"
+    message: str
+
+
+def run(domain_file: str, problem_file: str, search: str | None = None, time_limit: float | None = None,
+        memory_mb: float | None = None) -> FdRun:
+    """Run Fast Downward (translate + search) on two PDDL files."""
+    search = search or os.environ.get("BCC_FD_SEARCH") or DEFAULT_SEARCH
+    with tempfile.TemporaryDirectory(prefix="bcc-fd-") as tmp:
+        plan_file = os.path.join(tmp, "plan")
+        cmd = [sys.executable, str(driver()), "--plan-file", plan_file]
+        if time_limit is not None:
+            cmd += ["--overall-time-limit", f"{max(1, int(time_limit))}s"]
+        if memory_mb is not None:
+            cmd += ["--overall-memory-limit", f"{int(memory_mb)}M"]
+        cmd += [os.path.abspath(domain_file), os.path.abspath(problem_file), "--search", search]
+        start = time.perf_counter()
+        proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True)
+        seconds = time.perf_counter() - start
+        if proc.returncode == 0 and os.path.exists(plan_file):
+            plan, cost = _read_plan(plan_file)
+            return FdRun(True, plan, cost, seconds, "solved", "")
+        if proc.returncode in (11, 12):
+            return FdRun(False, [], None, seconds, "no_solution", "no plan exists (Fast Downward proved it)")
+        if proc.returncode in (22, 23, 24):
+            return FdRun(False, [], None, seconds, "budget", "stopped: Fast Downward ran out of time or memory")
+        tail = (proc.stderr.strip() or proc.stdout.strip()).splitlines()[-3:]
+        return FdRun(False, [], None, seconds, "error",
+                     f"Fast Downward failed (exit {proc.returncode}): {' | '.join(tail)}")
+
+
+def _read_plan(path: str):
+    ops, cost = [], None
+    for line in Path(path).read_text().splitlines():
+        line = line.strip()
+        if line.startswith(";"):
+            if "cost =" in line:
+                cost = int(line.split("cost =")[1].split()[0])
+        elif line:
+            ops.append(line.strip("()").split()[0])
+    return ops, cost
+
+
+def solve(model, budget, progress=None, search: str | None = None, **_):
+    """The `fd` solver: export `model`, run Fast Downward, return a bcc Result."""
+    from ..atomic import write_text
+    from ..solvers.base import Result
+    from .task import build_task
+    from .writer import domain_text, problem_text
+    driver()  # fail early, with the install hint
+    start = time.perf_counter()
+    task = build_task(model)
+    with tempfile.TemporaryDirectory(prefix="bcc-pddl-") as tmp:
+        dom, prob = os.path.join(tmp, "domain.pddl"), os.path.join(tmp, "problem.pddl")
+        write_text(dom, domain_text(task))
+        write_text(prob, problem_text(task))
+        left = None if budget.time_limit is None else max(1.0, budget.time_limit - (time.perf_counter() - start))
+        fd = run(dom, prob, search, left, budget.max_memory_mb)
+    seconds = round(time.perf_counter() - start, 6)
+    if fd.status == "error":
+        raise BccError(fd.message)
+    if not fd.solved:
+        return Result("fd", False, fd.status, seconds=seconds, message=fd.message,
+                      budget="time_limit" if fd.status == "budget" else None)
+    plan = [a for a in (task.action_of(op) for op in fd.plan) if a is not None]
+    cost = sum(model.action_costs[model.action_index(a)] for a in plan)
+    return Result("fd", True, "solved", plan=plan, cost=cost, seconds=seconds,
+                  message=f"Fast Downward, search {search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")

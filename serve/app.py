@@ -1,0 +1,177 @@
+"""The HTTP service: the JSON API (FastAPI, so /openapi.json is real) and the web page.
+
+Handlers are plain `def`s, so FastAPI runs them in its thread pool: a compile for
+drawing never blocks the event loop. Solves never run here: they are jobs
+(`jobs.py`), each in its own process.
+"""
+from __future__ import annotations
+
+import asyncio
+import contextlib
+from dataclasses import dataclass
+from pathlib import Path
+
+from fastapi import FastAPI, Request
+from fastapi.responses import FileResponse, JSONResponse
+from fastapi.staticfiles import StaticFiles
+
+from .. import __version__
+from ..errors import BccError, ModelError
+from .body_limit import BodyLimit
+from .compiled import CompileRejected, CompiledCache
+from .jobs import JobManager, QueueFull
+from .posted import parse_ref, public_error
+from .schemas import (DemonstrationRequest, DungeonFile, DungeonList, DungeonRequest, ErrorBody, JobCreated,
+                      JobStatus, ReplayRequest, ReplayResponse, SolveRequest)
+
+STATIC = Path(__file__).resolve().parent / "static"
+ERRORS = {400: {"model": ErrorBody, "description": "Bad input, with its position when known"},
+          413: {"model": ErrorBody, "description": "The request body is over the size limit"}}
+
+
+@dataclass(frozen=True)
+class Settings:
+    workers: int = 2                 # solves running at once
+    max_body_bytes: int = 1_000_000  # larger request bodies get 413
+    job_memory_mb: float = 1024      # default and cap of a job's max_memory_mb
+    max_time_limit: float = 300      # cap of a solve's time_limit
+    compile_seconds: float = 60      # wall-clock allowance for compiling, on top of time_limit
+    keep_seconds: float = 3600       # finished jobs are kept this long
+
+
+def error(status: int, body: dict) -> JSONResponse:
+    return JSONResponse(body, status_code=status)
+
+
+def create_app(settings: Settings = Settings()) -> FastAPI:
+    jobs = JobManager(settings.workers, settings.keep_seconds)
+    compiled = CompiledCache(settings.job_memory_mb, settings.compile_seconds, checks=max(2, settings.workers))
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app):
+        from . import sandbox
+        await asyncio.to_thread(sandbox.warm_up)  # start the fork server before the first job
+        yield
+        jobs.shutdown()
+
+    # No /docs or /redoc: FastAPI's pages for them load scripts from a CDN, and the
+    # viewer must work offline. The description itself is at /openapi.json.
+    app = FastAPI(title="bcc", version=__version__, lifespan=lifespan, docs_url=None, redoc_url=None,
+                  description="Compile and solve bcc dungeons over HTTP; a viewer at `/`.")
+    app.state.jobs, app.state.settings = jobs, settings
+    app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+
+    @app.exception_handler(BccError)
+    def bad_input(request: Request, exc: BccError):
+        return error(400, public_error(exc))
+
+    @app.exception_handler(CompileRejected)
+    def rejected(request: Request, exc: CompileRejected):
+        return error(exc.status, exc.body)
+
+    @app.exception_handler(ModelError)
+    def domain_error(request: Request, exc: ModelError):
+        return error(400, {"error": f"domain error: {exc}", "line": None, "column": None, "file": None})
+
+    def model_for(req: DungeonRequest):
+        return compiled.model(parse_ref(req.dungeon), req.goal)
+
+    # ---- the page ---------------------------------------------------------------
+    @app.get("/", include_in_schema=False)
+    def index():
+        return FileResponse(STATIC / "index.html")
+
+    app.mount("/static", StaticFiles(directory=STATIC), name="static")
+
+    # ---- dungeons ---------------------------------------------------------------
+    @app.get("/dungeons", response_model=DungeonList, summary="The shipped dungeons and domains")
+    def list_dungeons():
+        from .listing import listing
+        return listing()
+
+    @app.get("/dungeons/{name}", response_model=DungeonFile, responses={404: {"model": ErrorBody}},
+             summary="One shipped dungeon, with its YAML text")
+    def get_dungeon(name: str):
+        from .listing import dungeon_file
+        found = dungeon_file(name)
+        if found is None:
+            return error(404, {"error": f"no shipped dungeon named {name!r}"})
+        return found
+
+    @app.get("/solvers", summary="The available solvers")
+    def solvers():
+        from ..solvers import list_solvers
+        return {"solvers": list_solvers()}
+
+    # ---- compile, draw, step ----------------------------------------------------
+    @app.post("/compile", responses={**ERRORS, 422: {"model": ErrorBody}},
+              summary="Check and compile a dungeon: the report of `bcc compile --json`")
+    def compile_(req: DungeonRequest):
+        return compiled.report(parse_ref(req.dungeon), req.goal)
+
+    @app.post("/replay", response_model=ReplayResponse, responses=ERRORS,
+              summary="Run actions from the start: one frame per state, stopping where an action does not apply")
+    def replay(req: ReplayRequest):
+        from ..simulate import replay as run
+        from .scene import replay_frames, scene
+        model, rooms = model_for(req)
+        result = run(model, [(a, 1, k) for k, a in enumerate(req.actions, 1)], "actions")
+        out = replay_frames(model, result)
+        out["scene"] = scene(model, rooms) if req.include_scene else None
+        return out
+
+    @app.post("/demonstration", responses=ERRORS,
+              summary="A demonstration file (bcc-demonstration/1) of actions played from the start")
+    def demonstration(req: DemonstrationRequest):
+        from ..grounding.demonstration import from_actions
+        model, _ = model_for(req)
+        ref = parse_ref(req.dungeon)
+        demo = from_actions(model, req.actions, command=req.command, path="actions")
+        if ref.name is None:  # posted text has no path the file could name: save it as NAME.yaml beside it
+            demo.dungeon = f"{model.name}.yaml"
+        return demo.to_json()
+
+    # ---- jobs -------------------------------------------------------------------
+    @app.post("/solve", status_code=202, response_model=JobCreated, responses={**ERRORS, 503: {"model": ErrorBody}},
+              summary="Queue a solve; poll GET /jobs/{id}")
+    def solve(req: SolveRequest):
+        from .options import solver_options
+        ref = parse_ref(req.dungeon)
+        report = compiled.report(ref, req.goal)   # a malformed dungeon is a 400 now, not a failed job
+        options = solver_options(req)
+        memory = min(req.max_memory_mb or settings.job_memory_mb, settings.job_memory_mb)
+        time_limit = min(req.time_limit, settings.max_time_limit)
+        spec = {"ref": {"name": ref.name, "text": ref.text}, "goal": req.goal, "solver": req.solver,
+                "options": options, "time_limit": time_limit, "max_states": req.max_states,
+                "dungeon_name": report["dungeon"]}
+        try:
+            job = jobs.submit(spec, memory, time_limit + settings.compile_seconds)
+        except QueueFull as exc:
+            return error(503, {"error": str(exc)})
+        return {"id": job.id, "status": "queued"}
+
+    @app.get("/jobs/{job_id}", response_model=JobStatus, responses={404: {"model": ErrorBody}},
+             summary="A job's status, and its result when done")
+    def get_job(job_id: str):
+        job = jobs.get(job_id)
+        if job is None:
+            return error(404, {"error": f"no job {job_id!r} (finished jobs are forgotten after "
+                                        f"{settings.keep_seconds:g} s)"})
+        return job.to_json()
+
+    @app.delete("/jobs/{job_id}", response_model=JobStatus, responses={404: {"model": ErrorBody},
+                                                                       409: {"model": ErrorBody}},
+                summary="Cancel a queued or running job (its process is killed)")
+    def cancel_job(job_id: str):
+        job = jobs.get(job_id)
+        if job is None:
+            return error(404, {"error": f"no job {job_id!r}"})
+        if job.status in ("done", "failed"):
+            return error(409, {"error": f"job {job_id} has already finished ({job.status})"})
+        return jobs.cancel(job_id).to_json()
+
+    @app.get("/health", summary="Liveness, and how many jobs are in each state")
+    def health():
+        return {"ok": True, "version": __version__, "workers": settings.workers, "jobs": jobs.counts()}
+
+    return app

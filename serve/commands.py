@@ -1,0 +1,41 @@
+"""`bcc serve`: run the HTTP service (needs the `serve` extra: FastAPI and uvicorn)."""
+from __future__ import annotations
+
+import os
+
+import click
+
+from ..errors import BccError
+
+
+@click.command("serve")
+@click.option("--host", default="127.0.0.1", show_default=True, help="Address to listen on.")
+@click.option("--port", type=click.IntRange(0, 65535), default=8765, show_default=True)
+@click.option("--workers", type=click.IntRange(min=1), default=None,
+              help="Solves that run at once; more wait in a queue [default: the number of CPUs].")
+@click.option("--max-body", "max_body_kb", type=click.IntRange(min=1), default=1000, show_default=True,
+              metavar="KB", help="Larger request bodies get 413.")
+@click.option("--job-memory", "job_memory_mb", type=click.FloatRange(min=16), default=1024, show_default=True,
+              metavar="MB", help="Memory a job may add to its process (default and cap of max_memory_mb).")
+@click.option("--max-time-limit", type=click.FloatRange(min=0, min_open=True), default=300, show_default=True,
+              metavar="SECONDS", help="Cap on a solve's time_limit.")
+def serve_cmd(host, port, workers, max_body_kb, job_memory_mb, max_time_limit):
+    """Serve the JSON API and the web viewer (open http://HOST:PORT/).
+
+    \b
+    Examples:
+      bcc serve                         # http://127.0.0.1:8765/
+      bcc serve --port 9000 --workers 4
+    """
+    try:
+        import uvicorn
+        from .app import Settings, create_app
+    except ImportError as exc:
+        raise BccError(f'bcc serve needs {exc.name}: pip install "bcc[serve]"') from None
+    settings = Settings(workers=workers or os.cpu_count() or 1, max_body_bytes=max_body_kb * 1000,
+                        job_memory_mb=job_memory_mb, max_time_limit=max_time_limit)
+    click.echo(f"bcc serve: http://{host}:{port}/ ({settings.workers} worker(s); Ctrl-C stops)", err=True)
+    uvicorn.run(create_app(settings), host=host, port=port, log_level="warning")
+
+
+COMMANDS = [serve_cmd]

@@ -1,0 +1,136 @@
+"""Request and response bodies of the JSON API (pydantic), hence its OpenAPI schema."""
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, Field
+
+DUNGEON_HELP = ("A shipped dungeon's name (see GET /dungeons), or the YAML text of a dungeon. "
+                "Posted text may `extends:` shipped dungeons and name shipped domains only.")
+
+
+class DungeonRequest(BaseModel):
+    dungeon: str = Field(description=DUNGEON_HELP, examples=["bridge"])
+    goal: str | None = Field(None, description="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)'.")
+
+
+class SolveRequest(DungeonRequest):
+    solver: str = Field("astar", description="A solver name (GET /solvers).")
+    time_limit: float = Field(10, gt=0, description="Seconds the solver may search (capped by the server).")
+    max_states: int | None = Field(None, ge=1, description="Stop after storing this many states.")
+    max_memory_mb: float | None = Field(None, ge=1, description="Memory the job may add to its process "
+                                                                "[default and cap: the server's --job-memory].")
+    heuristic: str | None = Field(None, description="Informed solvers: auto, pdb, manhattan or blind.")
+    weight: float | None = Field(None, ge=1, description="astar/wastar: f = g + W h.")
+    episodes: int | None = Field(None, ge=1, description="Learning solvers: number of episodes.")
+    seed: int | None = Field(None, description="Learning solvers: random seed.")
+
+
+MAX_ACTIONS = 20_000  # a frame is ~1 KB of JSON: bounds one answer to tens of MB
+
+
+class ReplayRequest(DungeonRequest):
+    actions: list[str] = Field(default_factory=list, max_length=MAX_ACTIONS,
+                               description="Canonical action names, run from the start.")
+    include_scene: bool = Field(True, description="Also return the static drawing data (`scene`).")
+
+
+class DemonstrationRequest(DungeonRequest):
+    actions: list[str] = Field(max_length=MAX_ACTIONS, description="The actions played, from the dungeon's start.")
+    command: str | None = Field(None, description="What the player was asked to do, if anything.")
+
+
+class ErrorBody(BaseModel):
+    error: str
+    line: int | None = None
+    column: int | None = None
+    file: str | None = Field(None, description="'<posted>' for posted text, else the shipped file's name.")
+
+
+class JobCreated(BaseModel):
+    id: str
+    status: Literal["queued"] = "queued"
+
+
+class SolveResult(BaseModel):
+    """The fields of `bcc solve --json`."""
+    dungeon: str
+    goal: str
+    solver: str
+    solved: bool
+    status: str = Field(description="solved | no_solution | budget")
+    plan: list[str]
+    cost: int | None
+    expanded: int
+    generated: int
+    stored: int
+    seconds: float
+    peak_mb: float
+    budget: str | None = Field(description="Which budget ran out: max_states | time_limit | max_memory.")
+    message: str
+    heuristic: str | None
+    initial_h: int | float | None
+    episodes: list
+    converged_episode: int | None
+
+
+class JobStatus(BaseModel):
+    id: str
+    status: Literal["queued", "running", "done", "failed", "cancelled"]
+    result: SolveResult | None = Field(None, description="When done: the solver's result (solved or not).")
+    error: str | None = Field(None, description="When failed or cancelled: why.")
+    dungeon: str | None
+    solver: str | None
+    submitted: float
+    started: float | None
+    finished: float | None
+
+
+class DungeonInfo(BaseModel):
+    name: str
+    goal: str | None
+    extends: str | None
+    description: str
+
+
+class DungeonList(BaseModel):
+    dungeons: list[DungeonInfo]
+    domains: list[str]
+
+
+class DungeonFile(DungeonInfo):
+    domain: str | None
+    yaml: str = Field(description="The dungeon file's text (edit it and post it back).")
+
+
+class Frame(BaseModel):
+    agent: list[int]
+    facing: str | None
+    variables: dict
+    changed: list = Field(description="[x, z, [block indices from y = 0 up]] for columns unlike the start.")
+    goal: bool
+    failure: bool
+
+
+class Scene(BaseModel):
+    dungeon: str
+    goal: str
+    width: int
+    depth: int
+    height: int
+    blocks: list[str]
+    columns: list = Field(description="columns[z][x]: block indices from y = 0 up (rows are z, columns x).")
+    rooms: list[dict]
+    objects: list[dict]
+    actions: list[str]
+
+
+class ReplayResponse(BaseModel):
+    scene: Scene | None
+    valid: bool
+    steps: int
+    cost: int
+    reached_goal: bool
+    failed_step: int | None
+    message: str
+    frames: list[Frame]

@@ -1,0 +1,90 @@
+"""What runs inside a job's own process: compile or solve under a memory limit.
+
+The parent (`sandbox.py`) forks this from a clean fork server that has already imported
+the compiler and the solvers, so a job starts in milliseconds. The process caps its own
+address space (`RLIMIT_AS`) at what it uses now plus the job's memory limit, and passes
+the same allowance to the solver's `Budget`: whichever trips first ends the job cleanly
+(a solver's budget stop is a result; an allocation past the cap is a MemoryError,
+reported as a failure). Either way the server's process is never touched.
+"""
+from __future__ import annotations
+
+import os
+import resource
+
+from ..errors import BccError, ModelError
+from ..solvers import Budget, get_solver
+from ..solvers.base import current_rss_mb
+from .posted import DungeonRef, compile_ref, public_error
+# Imported here so the fork server preloads them: a job never pays for these imports.
+from ..solvers import astar, bfs  # noqa: F401
+
+
+def _vm_bytes() -> int:
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+
+
+def limit_memory(memory_mb: float) -> float:
+    """Cap this process's address space; return the RSS ceiling (MB) for the solver's Budget."""
+    try:
+        cap = _vm_bytes() + int(memory_mb * 2**20)
+        resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
+    except (OSError, ValueError):  # no /proc or no rlimits: the Budget alone still limits
+        pass
+    return current_rss_mb() + memory_mb
+
+
+# Shipped dungeons compiled once in the fork server (`preload.py`); every job inherits them.
+PRECOMPILED: dict = {}
+
+
+def load_model(spec: dict):
+    ref = DungeonRef(**spec["ref"])
+    if ref.name is not None and spec.get("goal") is None and ref.name in PRECOMPILED:
+        return PRECOMPILED[ref.name]
+    return compile_ref(ref, spec.get("goal"))
+
+
+def compile_task(spec: dict, rss_ceiling: float) -> dict:
+    model = load_model(spec)
+    return dict(model.report, action_names=list(model.action_names))
+
+
+def solve_task(spec: dict, rss_ceiling: float) -> dict:
+    model = load_model(spec)
+    solve = get_solver(spec.get("solver", "astar"))
+    budget = Budget(max_states=spec.get("max_states"), time_limit=spec.get("time_limit"), max_memory_mb=rss_ceiling)
+    result = solve(model, budget, **(spec.get("options") or {}))
+    return {"dungeon": model.name, "goal": model.goal_text, **result.to_json()}
+
+
+TASKS = {"compile": compile_task, "solve": solve_task}
+
+
+def main(conn, task: str, spec: dict, memory_mb: float) -> None:
+    """Entry point of a job process: one message on `conn`, `(kind, payload)`.
+
+    kind is "ok" (payload: the result), "bad_input" (the 400 body), "memory" or
+    "failed" (payload: a one-line message)."""
+    try:
+        os.nice(5)  # the server's own requests come first
+    except OSError:
+        pass
+    try:
+        rss_ceiling = limit_memory(memory_mb)
+        message = ("ok", TASKS[task](spec, rss_ceiling))
+    except MemoryError:
+        message = ("memory", f"the job exceeded its memory limit of {memory_mb:g} MB")
+    except BccError as exc:
+        message = ("bad_input", public_error(exc))
+    except ModelError as exc:
+        message = ("failed", f"domain error: {exc}")
+    except Exception as exc:  # noqa: BLE001 - a bug in bcc: the job fails, the server does not
+        message = ("failed", f"internal error: {type(exc).__name__}: {exc}")
+    try:
+        conn.send(message)
+    except MemoryError:
+        conn.send(("memory", "the job exceeded its memory limit"))
+    finally:
+        conn.close()

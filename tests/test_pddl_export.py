@@ -1,0 +1,135 @@
+"""The grounded PDDL export is exactly the compiled model (no PDDL tools needed).
+
+Exactness is checked on the export's own STRIPS semantics (`Task.successors`): along
+random walks, every state's successor set (action name, next state) in the export equals
+the model's, over *all* actions (not just the ones search keeps); failure states have no
+successors in the export; the goal holds in the same states.
+"""
+import json
+import random
+
+import pytest
+
+from bcc.compiler import compile_dungeon
+from bcc.errors import BccError
+from bcc.generate import generate_maze
+from bcc.model_json import FORMAT, model_json
+from bcc.pddl_io.plans import to_pddl_plan
+from bcc.pddl_io.task import build_task
+from bcc.pddl_io.writer import domain_text, problem_text
+from bcc.solvers import Budget, get_solver
+
+
+def model_successors(m, s):
+    out = set()
+    for a, fn in enumerate(m.apply_fns):
+        t = fn(s)
+        if t is not None:
+            out.add((m.action_names[a], t))
+    return out
+
+
+def export_successors(task, s):
+    return {(task.action_names[op.action], task.state_of(f)) for op, f in task.successors(task.facts_of(s))}
+
+
+def check_walks(m, task, walks=4, steps=60, seed=0):
+    rng = random.Random(seed)
+    checked = 0
+    for _ in range(walks):
+        s = m.initial
+        for _ in range(steps):
+            assert task.is_goal(task.facts_of(s)) == bool(m.is_goal(s))
+            if m.is_failure(s):
+                assert export_successors(task, s) == set()
+                break
+            succ = model_successors(m, s)
+            assert export_successors(task, s) == succ
+            checked += 1
+            if not succ:
+                break
+            s = rng.choice(sorted(succ))[1]
+    return checked
+
+
+@pytest.mark.parametrize("dungeon", ["grid", "bridge", "easy_maze", "four_rooms", "barnyard"])
+def test_export_matches_model_on_random_walks(dungeon):
+    m = compile_dungeon(dungeon)
+    task = build_task(m)
+    assert check_walks(m, task) > 20
+
+
+def test_export_matches_model_with_lava_and_stones():
+    text = generate_maze(7, 7, stones=1, lava=1, seed=3)
+    import tempfile, os
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "g.yaml")
+        open(path, "w").write(text)
+        m = compile_dungeon(path)
+    task = build_task(m)
+    assert check_walks(m, task, walks=8, steps=80, seed=1) > 50
+
+
+def test_walk_into_lava_is_a_dead_end():
+    # The bridge: from the start (x=1, z=3, facing north) turn right to face east, walk
+    # to x=2, then one more step east is the lava at x=3: the agent dies there.
+    m = compile_dungeon("bridge")
+    task = build_task(m)
+    s = m.initial
+    for name in ["rotate_right", "move_forward", "move_forward"]:
+        s = m.apply(m.action_index(name), s)
+    assert m.is_failure(s)
+    assert export_successors(task, s) == set()
+
+
+def test_plans_translate_and_reach_the_goal():
+    for dungeon in ["bridge", "four_rooms"]:
+        m = compile_dungeon(dungeon)
+        task = build_task(m)
+        result = get_solver("astar")(m, Budget(time_limit=30))
+        ops = to_pddl_plan(task, result.plan)
+        assert [task.action_of(op) for op in ops if task.action_of(op)] == result.plan
+        with pytest.raises(BccError):
+            to_pddl_plan(task, result.plan[1:])
+
+
+def test_pddl_text_names_and_header():
+    m = compile_dungeon("bridge")
+    task = build_task(m)
+    d, p = domain_text(task), problem_text(task)
+    assert d.startswith("; PDDL domain for dungeon bridge (domain minecraft), written by bcc ")
+    assert "(:action move_forward__0" in d and "(agent-x n1)" in p and "(cell x3 y0 z1 lava)" in p
+    assert d.count("(:action ") == task.stats["operators"]
+    # every operator name maps back to a canonical action
+    assert {task.action_of(op.name) for op in task.operators} <= set(m.action_names)
+
+
+def test_export_refuses_a_state_space_beyond_its_limit():
+    with pytest.raises(BccError, match="more than 100 states are reachable"):
+        build_task(compile_dungeon("bridge"), max_states=100)
+
+
+def test_cli_export(tmp_path):
+    from click.testing import CliRunner
+    from bcc.cli import main
+    r = CliRunner().invoke(main, ["export", "pddl", "grid", "-o", str(tmp_path / "out"), "--json"])
+    assert r.exit_code == 0, r.output
+    info = json.loads(r.output)
+    assert (tmp_path / "out" / "domain.pddl").read_text().count("(:action ") == info["operators"]
+    r = CliRunner().invoke(main, ["export", "pddl", "bridge", "-o", str(tmp_path / "o2"), "--max-states", "10"])
+    assert r.exit_code == 2 and "more than 10 states" in r.output
+
+
+def test_model_json_round_trips_the_layout():
+    m = compile_dungeon("bridge")
+    data = json.loads(json.dumps(model_json(m)))
+    assert data["format"] == FORMAT
+    assert bytes(data["initial"]) == m.initial
+    g = data["grid"]
+    for y in range(g["height"]):
+        for z in range(g["depth"]):
+            for x in range(g["width"]):
+                assert g["cells"][y][z][x] == m.grid.cell(m.initial, x, y, z)
+    labels = {v["label"]: v for v in data["variables"]}
+    assert data["initial"][labels["agent.x"]["index"]] + labels["agent.x"]["lo"] == data["initial_values"]["agent.x"]
+    assert [a["name"] for a in data["actions"]] == list(m.action_names)
