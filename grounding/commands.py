@@ -1,0 +1,262 @@
+"""CLI for the grounding layer: `bcc play`, `learn`, `train`, `command`, `corpus`.
+
+Heavy work (compiling, EM, SQLite) is imported inside each command, so `bcc --help`
+stays fast.
+"""
+from __future__ import annotations
+
+import json
+import sys
+
+import click
+
+from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, json_option
+from ..errors import BccError
+
+db_option = click.option("--db", "db", type=click.Path(dir_okay=False), default=None,
+                         help="The dataset file [default: $BCC_HOME/grounding.sqlite or ~/.local/share/bcc/grounding.sqlite].")
+
+
+@click.command("play")
+@click.argument("dungeon")
+@click.option("--record", type=click.Path(dir_okay=False, writable=True), help="Save the session as a demonstration (JSON, atomically).")
+@click.option("--command", "command_text", default=None, help="The command the session carries out (stored in the demonstration).")
+@json_option
+def play_cmd(dungeon, record, command_text, as_json):
+    """Play DUNGEON in the terminal: one key per action, the map redrawn each step, q quits.
+
+    On a terminal keys act at once; from a pipe each line is a string of keys."""
+    from .demonstration import extract
+    from .play import line_keys, play, tty_keys
+    model = compile_model(dungeon, None)
+    interactive = sys.stdin.isatty() and sys.stdout.isatty() and not as_json
+    keys = tty_keys() if interactive else line_keys(sys.stdin)
+    out = (lambda text: click.echo(text, err=True)) if as_json else click.echo
+    states = play(model, keys, out, clear=interactive)
+    demo = extract(model, states)
+    demo.command = command_text
+    if record and demo.dungeon == model.path:   # a dungeon file: name it relative to the recording
+        import os
+        demo.dungeon = os.path.relpath(os.path.abspath(model.path), os.path.dirname(os.path.abspath(record)))
+    if record:
+        demo.save(record)
+    if as_json:
+        emit_json({"dungeon": model.name, "actions": demo.actions, "steps": len(demo.actions),
+                   "goal_reached": model.is_goal(demo.states[-1]), "recorded": record})
+    else:
+        click.echo(f"{len(demo.actions)} action(s)" + (f"; demonstration saved to {record}" if record else ""))
+
+
+@click.command("learn")
+@click.argument("dungeon")
+@click.argument("command_text", metavar="COMMAND")
+@click.option("--demo", "demo_path", required=True, type=click.Path(dir_okay=False), help="A demonstration file (see `bcc play --record`).")
+@db_option
+@json_option
+def learn_cmd(dungeon, command_text, demo_path, db, as_json):
+    """Add a (COMMAND, demonstration) pair in DUNGEON to the dataset, with its inferred task."""
+    from .dataset import Dataset
+    from .demonstration import Demonstration
+    from .learn import explain
+    if not command_text.strip():
+        raise BccError("the command is empty")
+    model = compile_model(dungeon, None)
+    _same_dungeon(dungeon, demo_path)
+    demo = Demonstration.load(demo_path, model)
+    explained = explain(demo, dungeon)
+    if not explained:
+        raise BccError("the demonstration explains no task: its last state must achieve something no earlier "
+                       "state did", demo_path)
+    data = Dataset(db)
+    try:
+        row = data.add_pair(command_text, dungeon, demo.to_json() | {"command": command_text}, explained)
+        total = data.count()
+    finally:
+        data.close()
+    if as_json:
+        emit_json({"id": row, "command": command_text, "dungeon": dungeon, "task": explained[0]["task"],
+                   "explanations": [{"task": e["task"], "weight": e["weight"]} for e in explained],
+                   "pairs": total, "db": str(data.path)})
+        return
+    click.echo(f"pair {row} added to {data.path} ({total} pair(s)): {command_text!r} -> {explained[0]['task']}")
+    for e in explained[1:]:
+        click.echo(f"  also explains: {e['task']} (weight {e['weight']:.3g})")
+
+
+def _same_dungeon(dungeon: str, demo_path: str) -> None:
+    """The demonstration must have been recorded in the dungeon it is learned for."""
+    from pathlib import Path
+
+    from ..compiler import resolve_dungeon_path
+    try:
+        recorded = json.loads(Path(demo_path).read_text(encoding="utf-8")).get("dungeon")
+    except (OSError, ValueError, AttributeError):
+        return   # unreadable or not an object: Demonstration.load says what is wrong
+    if not isinstance(recorded, str):
+        return
+
+    def where(ref, base=None):
+        if base is not None and not Path(ref).is_absolute() and (Path(base) / ref).is_file():
+            ref = str(Path(base) / ref)
+        try:
+            return resolve_dungeon_path(ref).resolve()
+        except BccError:
+            return None
+    if where(recorded, Path(demo_path).parent) != where(dungeon):
+        raise BccError(f"the demonstration was recorded in {recorded!r}, not in {dungeon!r}", demo_path)
+
+
+@click.command("train")
+@db_option
+@click.option("--corpus/--no-corpus", "with_corpus", default=False, show_default=True,
+              help="Also train on the shipped corpus's training split.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the model to FILE (JSON, atomically).")
+@json_option
+def train_cmd(db, with_corpus, output, as_json):
+    """Retrain the translation model (IBM Model 2, EM) on the dataset; store it there."""
+    from . import corpus
+    from .dataset import Dataset
+    from .learn import train
+    data = Dataset(db)
+    try:
+        rows = data.pairs()
+        if with_corpus:
+            rows += [r for r in corpus.load() if r["split"] == "train"]
+        if not rows:
+            raise BccError("the dataset has no pairs: add some with `bcc learn`, or pass --corpus", str(data.path))
+        model, seconds = train(rows)
+        data.add_model(model.to_json(), len(rows), with_corpus, seconds)
+    finally:
+        data.close()
+    if output:
+        model.save(output)
+    if as_json:
+        emit_json({"pairs": len(rows), "vocabulary": len(model.vocabulary), "iterations": model.iterations,
+                   "seconds": round(seconds, 3), "with_corpus": with_corpus, "db": str(data.path), "output": output})
+        return
+    click.echo(f"trained on {len(rows)} pair(s), {len(model.vocabulary)} words, {model.iterations} EM iterations "
+               f"in {seconds:.2f} s; stored in {data.path}")
+
+
+def _translation(db, model_path):
+    """The model `bcc command` uses: --model FILE, else the dataset's newest, else the corpus's."""
+    from pathlib import Path
+
+    from .dataset import Dataset, default_path
+    from .translation import IBMModel2
+    if model_path:
+        return IBMModel2.load(model_path), model_path
+    path = Path(db) if db else default_path()
+    if path.is_file():
+        data = Dataset(path)
+        try:
+            latest = data.latest_model()
+        finally:
+            data.close()
+        if latest is not None:
+            return IBMModel2.from_json(latest, str(path)), str(path)
+    from . import corpus
+    return corpus.corpus_model(), "shipped corpus"
+
+
+@click.command("command")
+@click.argument("dungeon")
+@click.argument("text", metavar="TEXT")
+@db_option
+@click.option("--model", "model_path", type=click.Path(dir_okay=False), help="Use this model file (from `bcc train -o`).")
+@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), default=60, show_default=True,
+              metavar="SECONDS", help="Planner time limit.")
+@json_option
+def command_cmd(dungeon, text, db, model_path, time_limit, as_json):
+    """Interpret a natural-language command in DUNGEON and plan it.
+
+    Exit 0 when the chosen task is solved; 1 when no task is plausible or it has no plan."""
+    from ..solvers import Budget
+    from .interpret import plan, rank
+    from .learn import space_for
+    model = compile_model(dungeon, None)
+    translation, source = _translation(db, model_path)
+    space = space_for(dungeon)
+    found = rank(translation, space, model.initial, text)
+    if found.task is not None:
+        found.result = plan(dungeon, found.task, None, Budget(time_limit=time_limit,
+                                                             max_memory_mb=Budget.default().max_memory_mb))
+        if not found.result.solved:
+            found.message = f"no plan for {found.task}: {found.result.message}"
+    ok = found.result is not None and found.result.solved
+    if as_json:
+        emit_json({"dungeon": model.name, **found.to_json(), "model": source})
+        sys.exit(EXIT_OK if ok else EXIT_NO_SOLUTION)
+    if found.task is None:
+        click.echo(f"not understood: {found.message}" +
+                   (f" (unknown words: {', '.join(found.unknown_words)})" if found.unknown_words else ""))
+        sys.exit(EXIT_NO_SOLUTION)
+    click.echo(f"task: {found.task}")
+    click.echo("candidates:")
+    for t, s in found.candidates:
+        click.echo(f"  {s:8.4f}  {t}")
+    if found.unknown_words:
+        click.echo(f"unknown words (ignored): {', '.join(found.unknown_words)}")
+    r = found.result
+    if ok:
+        click.echo(f"plan: {len(r.plan)} step(s), cost {r.cost}")
+        for a in r.plan:
+            click.echo(a)
+    else:
+        click.echo(f"not solved: {found.message}")
+    sys.exit(EXIT_OK if ok else EXIT_NO_SOLUTION)
+
+
+@click.group("corpus")
+def corpus_group():
+    """The shipped command/demonstration corpus."""
+
+
+@corpus_group.command("generate")
+@click.option("--pairs", type=click.IntRange(min=10), default=360, show_default=True)
+@click.option("--seed", type=int, default=0, show_default=True)
+@json_option
+def corpus_generate_cmd(pairs, seed, as_json):
+    """Rebuild grounding/corpus/ (dungeons and pairs.jsonl) with a fixed seed (takes minutes)."""
+    from ..cli import progress_enabled
+    from . import corpus
+    show = progress_enabled()
+    stats = corpus.generate(pairs, seed, progress=(lambda k, n: click.echo(f"\r  {k}/{n}", err=True, nl=False))
+                            if show else None)
+    if show:
+        click.echo("", err=True)
+    if as_json:
+        emit_json(stats)
+    else:
+        click.echo(json.dumps(stats, indent=2))
+
+
+@corpus_group.command("evaluate")
+@json_option
+def corpus_evaluate_cmd(as_json):
+    """Train on the corpus's training split; report accuracy on its held-out split."""
+    import time
+
+    from . import corpus
+    from .learn import train
+    rows = corpus.load()
+    train_rows = [r for r in rows if r["split"] == "train"]
+    test_rows = [r for r in rows if r["split"] == "test"]
+    model, seconds = train(train_rows)
+    t0 = time.perf_counter()
+    result = corpus.evaluate(model, test_rows)
+    report = {"pairs": len(rows), "train": len(train_rows), "test": len(test_rows),
+              "train_seconds": round(seconds, 3), "evaluate_seconds": round(time.perf_counter() - t0, 3),
+              "inferred_top_is_true_task": sum(r["explanations"][0]["task"] == r["task"] for r in rows) / len(rows),
+              **{k: result[k] for k in ("correct", "accuracy", "errors")}}
+    if as_json:
+        emit_json(report)
+        return
+    click.echo(f"corpus: {len(rows)} pairs ({len(train_rows)} train, {len(test_rows)} held out); "
+               f"trained in {seconds:.2f} s")
+    click.echo(f"held-out accuracy: {result['correct']}/{len(test_rows)} = {result['accuracy']:.1%}")
+    for e in result["errors"]:
+        click.echo(f"  {e['dungeon']}: {e['command']!r} -> {e['got']} (expected {e['task']})")
+
+
+COMMANDS = [play_cmd, learn_cmd, train_cmd, command_cmd, corpus_group]

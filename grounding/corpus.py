@@ -1,0 +1,203 @@
+"""The shipped corpus: generated (command, demonstration) pairs with a held-out split.
+
+`python -m bcc.grounding.corpus` (or `bcc corpus generate`) rebuilds it with a fixed seed:
+dungeons (the reference ones, generated mazes with stones and lava, generated four-room
+dungeons), a task per pair (a room by color, the gold block, a stone to pick up), a start
+reached by a short random walk, a demonstration planned by A* from there, and a command
+from templates with varied verbs and phrasings. Each line of `corpus/pairs.jsonl` keeps
+the walk (`prefix`), the demonstration's `actions`, the true `task` (for evaluation only)
+and the inferred `explanations` (what training sees), so training needs no compiling.
+"""
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import random
+import time
+from pathlib import Path
+
+from ..atomic import write_text
+from ..errors import BccError
+
+CORPUS_DIR = Path(__file__).parent / "corpus"
+PAIRS = CORPUS_DIR / "pairs.jsonl"
+REFERENCE = ["grid", "bridge", "easy_maze", "tough_maze", "four_rooms"]
+MAZES = [(9, 9, 2, 1, 0.0, 1), (11, 11, 2, 1, 0.1, 2), (11, 9, 1, 0, 0.2, 3), (13, 13, 3, 1, 0.1, 4),
+         (9, 11, 1, 1, 0.0, 5), (15, 11, 2, 0, 0.1, 6)]
+ROOM_SEEDS = [1, 2, 3, 4, 5, 6, 7, 8]
+TEST_FRACTION = 0.2
+
+ROOM = ["go to the {c} room", "walk to the {c} room", "move to the {c} room", "head to the {c} room",
+        "get to the {c} room", "navigate to the {c} room", "enter the {c} room", "go into the {c} room",
+        "walk into the {c} room", "move into the {c} room", "head into the {c} room", "go toward the {c} room",
+        "walk over to the {c} room", "head over to the {c} room", "make your way to the {c} room",
+        "go inside the {c} room", "run to the {c} room", "please go to the {c} room", "take me to the {c} room",
+        "find the {c} room", "go to {c}", "step into the {c} room", "navigate into the {c} room",
+        "move over to the {c} room", "head toward the {c} room"]
+GOLD = ["go to the gold block", "walk to the gold block", "move to the gold", "head to the gold block",
+        "get to the gold block", "navigate to the gold block", "stand on the gold block", "stand on the gold",
+        "go stand on the gold block", "walk onto the gold block", "step onto the gold", "go toward the gold block",
+        "head over to the gold block", "move over to the gold", "get on the gold block", "find the gold block",
+        "reach the gold block", "walk over to the gold", "navigate to the gold", "head toward the gold",
+        "go over to the gold block", "move onto the gold block"]
+STONE = ["pick up the stone", "get a stone", "get the stone block", "mine the stone", "mine a stone block",
+         "collect the stone", "grab a stone", "take the stone", "dig up the stone", "go get the stone",
+         "fetch a stone block", "gather a stone", "get some stone", "pick up a stone block", "collect a stone"]
+FAMILIES = {"room": (0.45, ROOM), "gold": (0.35, GOLD), "stone": (0.2, STONE)}
+
+
+def resolve(ref: str, base: Path = CORPUS_DIR) -> str:
+    """A corpus dungeon reference: a shipped name, or a path relative to the corpus folder."""
+    return ref if ref in REFERENCE else str(Path(base) / ref)
+
+
+def load(path: str | Path = PAIRS) -> list[dict]:
+    try:
+        lines = Path(path).read_text(encoding="utf-8").splitlines()
+    except FileNotFoundError:
+        raise BccError("the shipped corpus is missing: rebuild it with `bcc corpus generate`", str(path)) from None
+    out = []
+    for n, line in enumerate(lines, 1):
+        try:
+            out.append(json.loads(line))
+        except json.JSONDecodeError as exc:
+            raise BccError(f"invalid JSON line: {exc.msg}", str(path), n, exc.colno) from None
+    return out
+
+
+def digest(path: str | Path = PAIRS) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()[:16]
+
+
+def _write_dungeons(out: Path) -> list[str]:
+    from ..generate import generate_maze
+    from .rooms import generate_rooms
+    (out / "dungeons").mkdir(parents=True, exist_ok=True)
+    refs = []
+    for w, d, stones, lava, loops, seed in MAZES:
+        name = f"maze_{w}x{d}_seed{seed}"
+        write_text(out / "dungeons" / f"{name}.yaml",
+                   generate_maze(w, d, stones=stones, lava=lava, loops=loops, seed=seed, name=name))
+        refs.append(f"dungeons/{name}.yaml")
+    for seed in ROOM_SEEDS:
+        write_text(out / "dungeons" / f"rooms_seed{seed}.yaml", generate_rooms(seed))
+        refs.append(f"dungeons/rooms_seed{seed}.yaml")
+    return refs
+
+
+def _family_tasks(space) -> dict:
+    """The tasks of each command family this dungeon offers (the templates' English knows them)."""
+    out = {"room": [], "gold": [], "stone": []}
+    for a in space.atoms:
+        if a.function == "agentInRoom":
+            out["room"].append((a.text, {"c": a.args[1]}))
+        elif a.text == "agentOnBlock(agent, gold)":
+            out["gold"].append((a.text, {}))
+        elif a.text == "agentHasBlock(agent, burlap_stone)":
+            out["stone"].append((a.text, {}))
+    return {k: v for k, v in out.items() if v}
+
+
+def generate(n: int = 360, seed: int = 0, out: Path = CORPUS_DIR, progress=None) -> dict:
+    """Write the corpus (dungeons and pairs.jsonl); return its statistics."""
+    from ..solvers import Budget
+    from .demonstration import from_actions
+    from .interpret import plan
+    from .learn import explain, space_for
+    t0 = time.perf_counter()
+    rng = random.Random(seed)
+    refs = REFERENCE + _write_dungeons(out)
+    spaces = {ref: space_for(resolve(ref, out)) for ref in refs}
+    offers = {ref: _family_tasks(spaces[ref]) for ref in refs}
+    families = list(FAMILIES)
+    rows, tries, inferred = [], 0, 0
+    while len(rows) < n:
+        tries += 1
+        family = rng.choices(families, weights=[FAMILIES[f][0] for f in families])[0]
+        ref = rng.choice([r for r in refs if family in offers[r]])
+        task, slots = rng.choice(offers[ref][family])
+        space = spaces[ref]
+        model = space.model
+        prefix, state = _random_walk(model, rng, rng.randint(0, 12))
+        if space.predicates.predicate(task)(state) or model.is_failure(state):
+            continue
+        result = plan(resolve(ref, out), task, state, Budget(time_limit=20))
+        if not result.solved:
+            continue
+        demo = from_actions(model, result.plan, start=state)
+        explained = explain(demo, resolve(ref, out))
+        if not explained:
+            continue
+        inferred += explained[0]["task"] == task
+        command = rng.choice(FAMILIES[family][1]).format(**slots)
+        rows.append({"id": len(rows), "split": "test" if rng.random() < TEST_FRACTION else "train",
+                     "command": command, "dungeon": ref, "task": task, "prefix": prefix,
+                     "actions": list(result.plan), "explanations": explained})
+        if progress:
+            progress(len(rows), n)
+    write_text(out / "pairs.jsonl", "".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows))
+    return {"pairs": len(rows), "train": sum(r["split"] == "train" for r in rows),
+            "test": sum(r["split"] == "test" for r in rows), "dungeons": len(refs),
+            "inferred_top_is_true_task": inferred / len(rows), "seconds": round(time.perf_counter() - t0, 1)}
+
+
+def _random_walk(model, rng: random.Random, steps: int):
+    """A start somewhere else: a few random moves and turns from the dungeon's start."""
+    moves = [model.action_index(a) for a in ("move_forward", "rotate_left", "rotate_right") if a in model.action_names]
+    state, prefix = model.initial, []
+    for _ in range(steps):
+        i = rng.choice(moves)
+        nxt = model.apply(i, state)
+        if nxt is None or model.is_failure(nxt):
+            continue
+        state = nxt
+        prefix.append(model.action_names[i])
+    return prefix, state
+
+
+def start_state(row: dict):
+    """The (space, start state) of a corpus row."""
+    from .demonstration import from_actions
+    from .learn import space_for
+    space = space_for(resolve(row["dungeon"]))
+    return space, from_actions(space.model, row["prefix"]).states[-1]
+
+
+def evaluate(model, rows: list[dict]) -> dict:
+    """Held-out accuracy: the interpreted task equals the task the pair was generated for."""
+    from .interpret import rank
+    right, wrong = 0, []
+    for row in rows:
+        space, start = start_state(row)
+        got = rank(model, space, start, row["command"]).task
+        if got == row["task"]:
+            right += 1
+        else:
+            wrong.append({"command": row["command"], "dungeon": row["dungeon"], "task": row["task"], "got": got})
+    return {"pairs": len(rows), "correct": right, "accuracy": right / len(rows) if rows else None, "errors": wrong}
+
+
+@dataclasses.dataclass
+class _Cache:
+    digest: str = ""
+    model: object = None
+
+
+_cache = _Cache()
+
+
+def corpus_model(split: str | None = "train"):
+    """The translation model trained on the shipped corpus (`split` rows, or all with None),
+    cached in memory; training takes well under a second, so nothing is shipped pre-trained."""
+    from .learn import train
+    key = f"{digest()}:{split}"
+    if _cache.digest != key:
+        rows = [r for r in load() if split is None or r["split"] == split]
+        _cache.model, _ = train(rows)
+        _cache.digest = key
+    return _cache.model
+
+
+if __name__ == "__main__":
+    print(json.dumps(generate(progress=lambda k, n: print(f"\r{k}/{n}", end="", flush=True)), indent=2))

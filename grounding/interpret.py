@@ -1,0 +1,86 @@
+"""A command in a dungeon -> the most probable task, and a plan that carries it out.
+
+P(task | words) is proportional to P(task) P(words | task): the prior over lifted tasks
+and the likelihood both come from the translation model (translation.py). A task is
+*plausible* when the translation model explains the command's known words better than
+chance (a task of never-seen tokens); if none is, or if at least half of the words were
+never seen in training, the command is not understood.
+"""
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+from dataclasses import dataclass, field
+
+from ..model import Model
+from .learn import template
+from .tasks import TaskSpace
+from .translation import IBMModel2, words
+
+TOP = 5              # candidates reported
+
+
+@dataclass
+class Interpretation:
+    command: str
+    task: str | None                   # canonical text of the chosen task, None if no task is plausible
+    candidates: list                   # [(task text, posterior score)], best first, plausible ones only
+    unknown_words: list
+    message: str = ""
+    result: object = None              # the solver's Result for the chosen task
+    all_scores: list = field(default_factory=list, repr=False)
+
+    def to_json(self) -> dict:
+        r = self.result
+        return {"command": self.command, "task": self.task,
+                "candidates": [{"task": t, "score": round(s, 6)} for t, s in self.candidates],
+                "unknown_words": self.unknown_words,
+                "solved": bool(r is not None and r.solved), "plan": list(r.plan) if r is not None and r.solved else [],
+                "cost": r.cost if r is not None and r.solved else None, "message": self.message}
+
+
+def rank(translation: IBMModel2, space: TaskSpace, start: bytes, command: str) -> Interpretation:
+    """Score every candidate task of the dungeon from `start` against the command."""
+    e = words(command)
+    unknown = sorted({w for w in e if w not in translation.vocabulary})
+    chance = translation.chance(e)
+    scored = []
+    for task in space.tasks(start):
+        ll = translation.log_likelihood(e, task.tokens)
+        prior = translation.log_prior(template(task.text))
+        scored.append((task.text, ll + prior, ll > chance + 1e-9))
+    if not scored:
+        return Interpretation(command, None, [], unknown, "the dungeon offers no task from this start")
+    top = max(s for _, s, _ in scored)
+    z = sum(math.exp(s - top) for _, s, _ in scored)
+    posterior = sorted(((t, math.exp(s - top) / z, ok) for t, s, ok in scored), key=lambda x: (-x[1], x[0]))
+    plausible = [(t, p) for t, p, ok in posterior if ok]
+    if not translation.known(e):
+        return Interpretation(command, None, [], unknown, "no word of the command was seen in training",
+                              all_scores=posterior)
+    if len(translation.known(e)) <= len(e) - len(translation.known(e)):
+        return Interpretation(command, None, [], unknown, "most words of the command were never seen in training",
+                              all_scores=posterior)
+    if not plausible:
+        return Interpretation(command, None, [], unknown, "no task explains the command better than chance",
+                              all_scores=posterior)
+    return Interpretation(command, plausible[0][0], plausible[:TOP], unknown, all_scores=posterior)
+
+
+@functools.lru_cache(maxsize=64)
+def goal_model(model_ref: str, task: str) -> Model:
+    from ..compiler import compile_dungeon
+    return compile_dungeon(model_ref, goal=task)
+
+
+def plan(model_ref: str, task: str, start: bytes | None, budget):
+    """Solve the chosen task with A* from `start` (default: the dungeon's start)."""
+    from ..solvers import get_solver
+    goal_model_: Model = goal_model(model_ref, task)
+    options = {}
+    if start is not None and start != goal_model_.initial:
+        # the pattern database is built for the compiled start; Manhattan holds from anywhere
+        goal_model_ = dataclasses.replace(goal_model_, initial=start)
+        options["heuristic"] = "manhattan"
+    return get_solver("astar")(goal_model_, budget, **options)

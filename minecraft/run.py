@@ -1,0 +1,201 @@
+"""Closed-loop execution: plan in the model, act in the real world, check, replan.
+
+Each step: the model predicts the next state (`model.apply`); an action the model forbids
+or one it predicts to be fatal is refused here, because the server would not stop or
+kill the bot the way bcc's rules do (it applies no lava damage and lets a player mine
+gold). The bot performs the action, the state parser reads the world back, and the
+observed state is compared with the prediction. On a difference the world wins: the
+plan is recomputed from the observed state.
+"""
+from __future__ import annotations
+
+import dataclasses
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+from ..errors import BccError
+from ..model import Model
+from ..solvers import Budget, get_solver
+from .actions import changed_cells, geometry
+from .bridge import BOT, Bridge
+from .world import WorldMap, check_supported, describe, difference
+
+
+@dataclass
+class Step:
+    number: int
+    action: str
+    predicted: bytes
+    observed: bytes
+    seconds: float               # from sending the action to having parsed the world again
+    differences: list            # empty when the world matched the prediction
+    notes: list                  # what the state parser could not fit into the model
+
+
+@dataclass
+class RunResult:
+    dungeon: str
+    solver: str
+    reached_goal: bool = False
+    status: str = "running"
+    message: str = ""
+    steps: list = field(default_factory=list)
+    plans: list = field(default_factory=list)       # each plan: {"from_step", "plan", "seconds"}
+    setup_seconds: float = 0.0
+    total_seconds: float = 0.0
+
+    def to_json(self, model: Model) -> dict:
+        act = [s.seconds for s in self.steps]
+        return {
+            "dungeon": self.dungeon, "solver": self.solver, "reached_goal": self.reached_goal,
+            "status": self.status, "message": self.message,
+            "actions": [s.action for s in self.steps],
+            "replans": max(0, len(self.plans) - 1), "plans": self.plans,
+            "steps": [{"step": s.number, "action": s.action, "seconds": round(s.seconds, 3),
+                       "predicted": model.decode(s.predicted), "observed": model.decode(s.observed),
+                       "matched": not s.differences, "differences": s.differences, "notes": s.notes}
+                      for s in self.steps],
+            "seconds": {"setup": round(self.setup_seconds, 3), "total": round(self.total_seconds, 3),
+                        "actions": round(sum(act), 3),
+                        "per_action_mean": round(sum(act) / len(act), 3) if act else None,
+                        "per_action_max": round(max(act), 3) if act else None},
+        }
+
+
+def solve_from(model: Model, state: bytes, solver: str, budget: Budget, replanning: bool):
+    """A plan from `state` (the compiled model with its start moved there)."""
+    options = {"heuristic": "manhattan"} if replanning and solver in ("astar", "wastar", "idastar", "gbfs") else {}
+    return get_solver(solver)(dataclasses.replace(model, initial=state), budget, **options)
+
+
+def prepare(bridge: Bridge, world: WorldMap, port: int, player: str = BOT) -> None:
+    """Start the server, build the dungeon, bring the bot in at the start."""
+    bridge.start(port=port)
+    bridge.build(world)
+    bridge.spawn_bot(player)
+    bridge.setup(player, world.pose(world.model.initial), world.hotbar(world.model.initial))
+
+
+def observe_state(bridge: Bridge, world: WorldMap, player: str):
+    return world.parse(bridge.observe(player))
+
+
+def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | None = None,
+        player: str = BOT, max_steps: int = 200, max_replans: int = 5, delay: float = 0.0,
+        log: Callable[[str], None] = lambda line: None,
+        after_step: Callable[[int, Bridge], None] | None = None) -> RunResult:
+    """Solve, execute in the world step by step, replan on divergence (the bot must be in
+    the world at the dungeon's start: see `prepare`). `after_step(n, bridge)` lets a test
+    disturb the world between steps."""
+    check_supported(model)
+    world = WorldMap(model)
+    budget = budget or Budget(time_limit=60)
+    result = RunResult(model.name, solver)
+    started = time.perf_counter()
+    parsed = observe_state(bridge, world, player)
+    state = parsed.state
+    if state != model.initial:
+        diffs = difference(model, model.initial, state)
+        log(f"the world differs from the dungeon's start: {'; '.join(diffs[:4])}")
+    plan: list = []
+    step = 0
+    while True:
+        if model.is_goal(state):
+            result.reached_goal, result.status = True, "goal"
+            result.message = f"goal reached in {step} steps"
+            break
+        if model.is_failure(state):
+            result.status, result.message = "failure", "the agent is dead (bcc's rules)"
+            break
+        if step >= max_steps:
+            result.status, result.message = "max_steps", f"stopped after {max_steps} steps"
+            break
+        if not plan:
+            if len(result.plans) > max_replans:
+                result.status, result.message = "diverged", f"the world diverged {max_replans} times; giving up"
+                break
+            res = solve_from(model, state, solver, budget, replanning=bool(result.plans))
+            result.plans.append({"from_step": step, "plan": list(res.plan), "seconds": round(res.seconds, 3),
+                                 "solved": res.solved})
+            if not res.solved:
+                result.status, result.message = "no_plan", f"{solver}: {res.message or res.status}"
+                break
+            plan = list(res.plan)
+            log(f"{'plan' if len(result.plans) == 1 else 'replan'} ({solver}, {res.seconds:.2f} s): "
+                f"{len(plan)} actions: {' '.join(plan)}")
+        if delay and step:
+            time.sleep(delay)     # slow enough for a person watching in the game
+        action = plan.pop(0)
+        index = model.action_index(action)
+        predicted = model.apply(index, state)
+        if predicted is None:
+            raise BccError(f"step {step + 1}: the plan's {action} does not apply: "
+                           f"{model.why_not(index, state)} is false")
+        if model.is_failure(predicted):
+            # The server would let the bot walk into lava unharmed: the bridge enforces
+            # bcc's rule by refusing the step instead.
+            result.status = "refused"
+            result.message = f"step {step + 1}: {action} would kill the agent in bcc's rules; not executed"
+            break
+        step += 1
+        t0 = time.perf_counter()
+        bridge.act(player, **geometry(world, action, state, predicted))
+        parsed = observe_state(bridge, world, player)
+        seconds = time.perf_counter() - t0
+        diffs = difference(model, predicted, parsed.state)
+        result.steps.append(Step(step, action, predicted, parsed.state, seconds, diffs, parsed.notes))
+        log(f"{step:3d} {action:<14} {seconds * 1000:5.0f} ms  predicted {describe(model, predicted)}")
+        log(f"    {'':<14} {'':>8}  observed  {describe(model, parsed.state)}"
+            + ("  = match" if not diffs else "  DIVERGED"))
+        g = model.grid
+        for x, y, z, old, new in changed_cells(model, state, predicted):
+            seen = g.value_names[g.cell(parsed.state, x, y, z)]
+            log(f"        block ({x}, {y}, {z}): {g.value_names[old]} -> {g.value_names[new]}, observed {seen}")
+        for d in diffs[:6]:
+            log(f"        {d}")
+        for n in parsed.notes[:4]:
+            log(f"        note: {n}")
+        state = parsed.state
+        if after_step is not None:
+            after_step(step, bridge)
+            parsed = observe_state(bridge, world, player)
+            if parsed.state != state:
+                diffs = difference(model, state, parsed.state)
+                log(f"        the world changed after step {step}: {'; '.join(diffs[:4])}")
+                state = parsed.state
+                plan = []
+                continue
+        if diffs:
+            plan = []   # the world wins: replan from what is really there
+    result.total_seconds = time.perf_counter() - started
+    return result
+
+
+def run_dungeon(model: Model, port: int, solver: str = "astar", budget: Budget | None = None,
+                log: Callable[[str], None] = lambda line: None, log_path=None, watch: float = 0.0,
+                **options) -> RunResult:
+    """Everything for `bcc minecraft run`: a bridge, the server, the bot, the closed loop.
+    With `watch` > 0, first wait up to that many seconds for a person to join and watch
+    (the bot then pauses between actions, and the world stays up a while at the end)."""
+    from .bridge import VERSION
+    from .record import wait_for_player
+    check_supported(model)
+    t0 = time.perf_counter()
+    with Bridge(log_path=log_path) as bridge:
+        log(f"starting the Minecraft server on 127.0.0.1:{port} and building {model.name} ...")
+        prepare(bridge, WorldMap(model), port)
+        setup = time.perf_counter() - t0
+        log(f"server up, dungeon built, bot {BOT} at the start ({setup:.1f} s)")
+        if watch > 0:
+            log(f"to watch, join with a Minecraft {VERSION} client at 127.0.0.1:{port}; waiting up to {watch:g} s")
+            try:
+                log(f"{wait_for_player(bridge, None, watch)} is watching")
+            except BccError:
+                log("nobody joined; running anyway")
+            options.setdefault("delay", 0.6)
+        result = run(model, bridge, solver=solver, budget=budget, log=log, **options)
+        result.setup_seconds = setup
+        if watch > 0:
+            time.sleep(min(10.0, watch))
+    return result

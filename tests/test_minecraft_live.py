@@ -1,0 +1,97 @@
+"""Against a real Minecraft server: flying-squid on 127.0.0.1 and mineflayer bots, driven
+through the bridge. CI installs the Node packages (`npm ci` in minecraft/) first; the
+tests skip, saying why, only where Node or those packages are missing."""
+from __future__ import annotations
+
+import math
+import shutil
+import socket
+import time
+
+import pytest
+
+from bcc.minecraft.bridge import BOT, Bridge, MinecraftError, installed, node_dir
+from bcc.minecraft.run import prepare, run
+from bcc.minecraft.world import ORIGIN, WorldMap
+from bcc.solvers import Budget, get_solver
+
+if not shutil.which("node"):
+    pytest.skip("Node.js is not installed: the Minecraft server cannot run", allow_module_level=True)
+if not installed():
+    pytest.skip(f"the Minecraft packages are not installed in {node_dir()}: run `bcc minecraft setup`",
+                allow_module_level=True)
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def bridge(tmp_path):
+    b = Bridge(log_path=tmp_path / "bridge.log", timeout=30)
+    try:
+        yield b
+    finally:
+        b.close()
+
+
+def cell_block(obs, x, y, z, size):
+    width, _, depth = size
+    return obs["palette"][obs["cells"][y * width * depth + z * width + x]]
+
+
+def test_bot_bridges_the_lava_and_stands_on_the_gold(bridge, model_of):
+    m = model_of("bridge")
+    world = WorldMap(m)
+    prepare(bridge, world, free_port())
+    result = run(m, bridge, solver="astar", budget=Budget(time_limit=30))
+    assert result.reached_goal, result.message
+    # an optimal plan, checked against a second solver (BFS), and every step as predicted
+    bfs = get_solver("bfs")(m, Budget(time_limit=30))
+    assert len(result.steps) == bfs.cost
+    assert all(not s.differences for s in result.steps)
+    assert len(result.plans) == 1
+    # the world itself, not only the parsed state: the bot on the gold, the lava bridged
+    obs = bridge.observe(BOT)
+    x, y, z = (math.floor(c - o) for c, o in zip(obs["position"], ORIGIN))
+    assert (x, y, z) == (5, 1, 5)
+    assert cell_block(obs, 5, 0, 5, world.size) == "gold_block"
+    lava_row = [cell_block(obs, 3, 0, zz, world.size) for zz in range(1, 6)]
+    assert lava_row.count("stone") == 1 and lava_row.count("lava") == 4
+    assert cell_block(obs, 1, 1, 5, world.size) == "air"          # the stone was mined
+
+
+def test_run_replans_when_the_world_diverges(bridge, model_of):
+    m = model_of("bridge")
+    world = WorldMap(m)
+    prepare(bridge, world, free_port())
+
+    def push(step, b):
+        if step == 3:   # someone turns the bot round behind the planner's back
+            b.act(BOT, kind="look", yaw=180.0, pitch=0.0)
+
+    lines = []
+    result = run(m, bridge, budget=Budget(time_limit=30), after_step=push, log=lines.append)
+    assert result.reached_goal, result.message
+    assert len(result.plans) == 2 and result.plans[1]["from_step"] == 3
+    assert any("the world changed after step 3" in line for line in lines)
+    assert any("replan" in line for line in lines)
+
+
+def test_a_killed_bridge_fails_fast(bridge):
+    bridge.start(port=free_port())
+    bridge.proc.kill()
+    t0 = time.monotonic()
+    with pytest.raises(MinecraftError, match="exited"):
+        bridge.observe()
+    assert time.monotonic() - t0 < 5
+
+
+def test_a_busy_port_is_reported(bridge):
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+        with pytest.raises(MinecraftError, match="in use"):
+            bridge.start(port=s.getsockname()[1])
