@@ -4,14 +4,18 @@ when matplotlib is installed: `pip install ".[bench]"`).
 
     python bench/run.py            # everything (about 10-20 minutes on 2 cores)
     python bench/run.py --quick    # smaller sizes, fewer solvers (about 2 minutes)
+    python bench/run.py --workers 2  # solves two at a time (faster; timings less clean)
 
 Three parts:
 1. reference dungeons x solvers/heuristics;
 2. generated mazes of growing size (15 -> 65 cells wide, 0 -> 10 stones) x solvers;
 3. simulator throughput: steps/s through the compiled model, against a literal Python
    reading of the spec (tests/spec_reference.py) as the peer, in the same run.
-Every solve runs in its own process (peak memory is its own), with a time limit. Speed
-is compared as ratios against peers in the same run, never as absolute targets in tests.
+Solves go through the batch API (`bcc.batch.solve_runs`): every solve runs in its own
+process (peak memory is its own) with its time limit, and hard limits behind it; one at
+a time by default, so timings are not disturbed by each other. `wall_seconds` is compile
+plus solve. Speed is compared as ratios against peers in the same run, never as absolute
+targets in tests.
 """
 from __future__ import annotations
 
@@ -19,9 +23,7 @@ import argparse
 import json
 import platform
 import random
-import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -33,23 +35,16 @@ SOLVERS = [("bfs", None), ("astar", "auto"), ("astar", "manhattan"), ("astar", "
 QUICK_SOLVERS = [("bfs", None), ("astar", "auto"), ("astar", "manhattan"), ("astar", "pdb")]
 
 
-def solve(dungeon: str, solver: str, heuristic: str | None, time_limit: float) -> dict:
-    cmd = [sys.executable, "-m", "bcc", "solve", dungeon, "--solver", solver, "--json",
-           "--time-limit", str(time_limit)]
-    if heuristic:
-        cmd += ["--heuristic", heuristic]
-    t0 = time.perf_counter()
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit * 3 + 60)
-    except subprocess.TimeoutExpired:
-        return {"solved": False, "error": "timeout"}
-    wall = time.perf_counter() - t0
-    if proc.returncode not in (0, 1):
-        return {"solved": False, "error": proc.stderr.strip()[-300:]}
-    data = json.loads(proc.stdout)
-    data["wall_seconds"] = round(wall, 3)  # includes start-up and compiling
-    data["states_per_second"] = round(data["expanded"] / data["seconds"]) if data["seconds"] else None
-    return data
+def solve_all(jobs: list, time_limit: float, workers: int) -> list[dict]:
+    """jobs: (label, dungeon, solver, heuristic) -> one row each, through the batch API."""
+    from bcc.batch import Run, solve_runs
+    runs = [Run(dungeon, solver, None, (("heuristic", heuristic),) if heuristic else (),
+                (("time_limit", time_limit),)) for _, dungeon, solver, heuristic in jobs]
+    rows = []
+    for (label, *_), data in zip(jobs, solve_runs(runs, workers=workers)):
+        data["states_per_second"] = round(data["expanded"] / data["seconds"]) if data["seconds"] else None
+        rows.append(row_of(label, data))
+    return rows
 
 
 def row_of(label: dict, data: dict) -> dict:
@@ -81,30 +76,22 @@ def print_table(rows: list, title: str) -> None:
                   f"{r['states_per_second'] or 0:>9,} {r['peak_mb']:>7.1f}")
 
 
-def reference(solvers, time_limit) -> list:
-    rows = []
-    for name in REFERENCE:
-        for solver, heuristic in solvers:
-            data = solve(name, solver, heuristic, time_limit)
-            rows.append(row_of({"dungeon": name, "solver": solver, "heuristic_asked": heuristic}, data))
-    return rows
+def reference(solvers, time_limit, workers) -> list:
+    jobs = [({"dungeon": name, "solver": solver, "heuristic_asked": heuristic}, name, solver, heuristic)
+            for name in REFERENCE for solver, heuristic in solvers]
+    return solve_all(jobs, time_limit, workers)
 
 
-def generated(sizes, stone_counts, solvers, time_limit, seed=1) -> list:
-    sys.path.insert(0, str(HERE.parent.parent))
-    from bcc.generate import generate_maze
-    rows = []
-    with tempfile.TemporaryDirectory() as tmp:
-        for size in sizes:
-            for stones in stone_counts:
-                text = generate_maze(size, size, stones=stones, seed=seed)
-                path = Path(tmp) / f"maze_{size}_{stones}.yaml"
-                path.write_text(text)
-                for solver, heuristic in solvers:
-                    data = solve(str(path), solver, heuristic, time_limit)
-                    rows.append(row_of({"dungeon": f"maze {size}x{size} stones={stones}", "size": size,
-                                        "stones": stones, "solver": solver, "heuristic_asked": heuristic}, data))
-    return rows
+def generated(sizes, stone_counts, solvers, time_limit, workers, seed=1) -> list:
+    """Generated mazes, named by generator spec: each worker regenerates its maze."""
+    jobs = []
+    for size in sizes:
+        for stones in stone_counts:
+            spec = f"maze:width={size},depth={size},stones={stones},seed={seed}"
+            for solver, heuristic in solvers:
+                jobs.append(({"dungeon": f"maze {size}x{size} stones={stones}", "size": size, "stones": stones,
+                              "solver": solver, "heuristic_asked": heuristic}, spec, solver, heuristic))
+    return solve_all(jobs, time_limit, workers)
 
 
 def throughput(steps: int = 200_000) -> list:
@@ -192,19 +179,21 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--time-limit", type=float, default=60)
+    ap.add_argument("--workers", type=int, default=1, help="solves at once (default 1: clean timings)")
     ap.add_argument("--out", default=str(HERE / "results.json"))
     args = ap.parse_args()
     solvers = QUICK_SOLVERS if args.quick else SOLVERS
     sizes = [15, 25, 35] if args.quick else [15, 25, 35, 45, 55, 65]
     stones = [0, 10] if args.quick else [0, 5, 10]
-    ref_rows = reference(solvers, args.time_limit)
+    ref_rows = reference(solvers, args.time_limit, args.workers)
     print_table(ref_rows, "reference dungeons")
-    gen_rows = generated(sizes, stones, solvers, args.time_limit)
+    gen_rows = generated(sizes, stones, solvers, args.time_limit, args.workers)
     print_table(gen_rows, "generated mazes")
     tp = throughput(50_000 if args.quick else 200_000)
     out = Path(args.out)
     payload = {"when": time.strftime("%Y-%m-%d %H:%M:%S"), "python": sys.version.split()[0],
                "machine": platform.machine(), "quick": args.quick, "time_limit": args.time_limit,
+               "workers": args.workers,
                "reference": ref_rows, "generated": gen_rows, "throughput": tp}
     tmp = out.with_suffix(".tmp")
     tmp.write_text(json.dumps(payload, indent=2) + "\n")

@@ -37,7 +37,7 @@ ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
-PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md"]
+PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md"]
 
 FENCE = re.compile(r"^```([^\n`]*)\n(.*?)^```[ \t]*$", re.M | re.S)
 FILE_MARK = re.compile(r"<!--\s*(file|append):\s*(\S+)\s*-->\s*\Z")

@@ -1,0 +1,110 @@
+"""The results file: JSON Lines, one row per finished run, appended atomically.
+
+Each row is one `os.write` of a whole line on an O_APPEND descriptor, then `fsync`: a
+reader sees a row entirely or not at all, and a killed sweep keeps every row it wrote.
+The only damage a crash can leave is a torn last line (a write the kernel cut short,
+e.g. on a full disk); `ResultsFile.open_for_append` drops it, and `read_rows` reports
+it instead of failing.
+"""
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+
+from ..errors import BccError
+
+
+@dataclass
+class Contents:
+    rows: list = field(default_factory=list)
+    bad_lines: list = field(default_factory=list)   # 1-based numbers of lines that are not rows
+    torn_tail: int = 0                               # bytes of an unfinished last line
+
+
+def read_rows(path: str) -> Contents:
+    """The rows of a results file (missing file: none). Unreadable lines are reported in
+    `bad_lines`, an unfinished last line in `torn_tail`; neither is an error."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except FileNotFoundError:
+        return Contents()
+    except OSError as exc:
+        raise BccError(f"cannot read results: {exc.strerror}", path) from None
+    out = Contents()
+    body, _, tail = data.rpartition(b"\n")
+    out.torn_tail = len(tail)
+    for number, line in enumerate(body.split(b"\n") if body or data.startswith(b"\n") else [], start=1):
+        if not line.strip():
+            continue
+        try:
+            row = json.loads(line)
+        except (ValueError, UnicodeDecodeError):
+            out.bad_lines.append(number)
+            continue
+        if isinstance(row, dict):
+            out.rows.append(row)
+        else:
+            out.bad_lines.append(number)
+    return out
+
+
+class ResultsFile:
+    """Appends rows to `path`; use as a context manager."""
+
+    def __init__(self, path: str):
+        self.path = path
+        self.fd: int | None = None
+
+    def __enter__(self) -> "ResultsFile":
+        self.open_for_append()
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def open_for_append(self) -> int:
+        """Open (creating it), lock it against a second sweep writing the same file, and cut
+        off a torn last line; returns how many bytes were cut."""
+        import fcntl
+        try:
+            self.fd = os.open(self.path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o666)
+            try:
+                fcntl.flock(self.fd, fcntl.LOCK_EX | fcntl.LOCK_NB)  # released when this process ends
+            except BlockingIOError:
+                self.close()
+                raise BccError("another `bcc batch` is writing this results file; wait for it, "
+                               "or choose another --out", self.path) from None
+            size = os.fstat(self.fd).st_size
+            cut = 0
+            if size:
+                with open(self.path, "rb") as f:
+                    f.seek(max(size - 65536, 0))
+                    chunk = f.read()
+                if not chunk.endswith(b"\n"):
+                    newline = chunk.rfind(b"\n")
+                    keep = size - len(chunk) + newline + 1 if newline >= 0 else (0 if size <= 65536 else None)
+                    if keep is None:  # one enormous unfinished line: end it, so the next row starts clean
+                        os.write(self.fd, b"\n")
+                    else:
+                        cut = size - keep
+                        os.truncate(self.path, keep)
+            return cut
+        except OSError as exc:
+            raise BccError(f"cannot write results: {exc.strerror}", self.path) from None
+
+    def append(self, row: dict) -> None:
+        line = (json.dumps(row, sort_keys=False, default=str) + "\n").encode("utf-8")
+        try:
+            written = os.write(self.fd, line)
+            while written < len(line):  # only on a full disk or a signal; the rest follows at once
+                written += os.write(self.fd, line[written:])
+            os.fsync(self.fd)
+        except OSError as exc:
+            raise BccError(f"cannot write results: {exc.strerror}", self.path) from None
+
+    def close(self) -> None:
+        if self.fd is not None:
+            os.close(self.fd)
+            self.fd = None
