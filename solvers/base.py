@@ -62,7 +62,7 @@ class Result:
     heuristic: str | None = None
     initial_h: float | None = None
     episodes: list = field(default_factory=list)   # learning solvers: [{"steps", "return", "success"}, ...]
-    converged_episode: int | None = None           # learning solvers: first episode from which all are optimal
+    converged_episode: int | None = None           # learning solvers: first episode after which all are optimal
 
     def to_json(self) -> dict:
         return asdict(self)
