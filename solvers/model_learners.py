@@ -1,0 +1,254 @@
+"""What R-max learns: transition models built from the agent's own experience.
+
+`Tabular` remembers each (state, action); `ObjectOriented` learns each action's effect
+relative to the agent under conditions over local features, in the spirit of DOORMax
+(Diuk, Cohen and Littman 2008), so knowledge from one cell carries to every cell.
+Both answer `predict(s, a)` with the next state, or None when they do not know yet
+(R-max is then optimistic), and learn from `observe(s, a, next_state)`.
+"""
+from __future__ import annotations
+
+import re
+
+from ..model import Model
+
+
+class Tabular:
+    """(state, action) -> observed outcome, known after m visits."""
+
+    def __init__(self, model: Model, m: int = 1):
+        self.m, self.table, self.visits = m, {}, {}
+
+    def observe(self, s, a, outcome):
+        self.visits[(s, a)] = self.visits.get((s, a), 0) + 1
+        self.table[(s, a)] = outcome
+
+    def predict(self, s, a):
+        if self.visits.get((s, a), 0) >= self.m:
+            return self.table[(s, a)]
+        return None
+
+
+class ObjectOriented:
+    """DOORMax-style learner. An action's *effect* -- the agent's attributes set to new
+    values, its position moved by a delta, cells changed relative to it -- is learned as a
+    function of *conditions* over local features: the agent's attributes other than its
+    position, and the cells next to it (within `radius` in the plane, three layers).
+    Nothing is keyed by absolute position, so what is learned in one cell holds in every
+    cell with the same surroundings, and (with the same domain) in other dungeons.
+
+    Each effect's condition is a disjunction of terms; a term allows, per feature, the
+    values seen with it (an attribute seen with two values stops mattering). A new example
+    of an effect widens the first term that can take it without covering any example of
+    another effect (DOORMax's failure conditions), else starts a term of its own; an
+    example that a term of another effect covered splits that effect's terms again.
+    A state is predicted when exactly one effect covers it (or it was seen exactly);
+    otherwise it is unknown, hence optimistic. A feature seen with two values stops
+    mattering to a term, except that "nothing happened" (a disjunction of many reasons)
+    keeps the values it was seen with: a block never met next to the agent, or an item
+    never held, is worth trying.
+    """
+
+    ANY = None
+
+    def __init__(self, model: Model, m: int = 1, radius: int = 1):
+        self.model, self.m = model, m
+        g = model.grid
+        self.pos = [p[0] if p is not None else None for p in model.position]
+        pos_idx = {i for i in self.pos if i is not None}
+        self.attrs = [v.index for v in model.variables if v.index not in pos_idx]
+        self.pointers = self._pointers(model, pos_idx)
+        self.n_attrs = len(self.attrs) + len(self.pointers)
+        self.index_features = {self.attrs.index(v) for v, _ in self.pointers}
+        self.offsets = [(dx, dy, dz) for dy in (-1, 0, 1) for dz in range(-radius, radius + 1)
+                        for dx in range(-radius, radius + 1) if abs(dx) + abs(dz) <= radius]
+        self.area = g.width * g.depth
+        self.span = {v.index: v.hi - v.lo for v in model.variables}
+        self.cache = {}          # state -> its feature tuple
+        self.exact = {}          # (action, features) -> effect
+        self.examples = {}       # action -> {effect: [feature tuples]}
+        self.terms = {}          # (action, effect) -> [term: list of allowed value sets per feature]
+        self.general = {}        # (action, effect) -> the same terms with the fewest constraints
+        self.noops = set()       # (action, features but index attributes) where nothing happened
+        self.predicted = {}      # (action, features) -> effect or None, until knowledge changes
+        self.fallback = Tabular(model, m)
+        self.wrong = set()       # (state, action) where a generalised prediction failed
+
+    @staticmethod
+    def _pointers(model, skip):
+        """Integer attributes that index a list of objects (a selected slot), each with the
+        attributes of the object it points to: [(index variable, [variable per value])].
+        The object pointed to is what matters (the item held), not the number."""
+        lists = {}
+        for v in model.variables:
+            m = re.fullmatch(r"(.+)\[(\d+)\]\.(\w+)", v.label)
+            if m:
+                lists.setdefault((m.group(1), m.group(3)), {})[int(m.group(2))] = v.index
+        out = []
+        for v in model.variables:
+            if v.type != "int" or v.index in skip:
+                continue
+            for members in lists.values():
+                if sorted(members) == list(range(v.lo, v.hi + 1)):
+                    out.append((v.index, [members[k] for k in range(v.lo, v.hi + 1)]))
+        return out
+
+    def features(self, s):
+        f = self.cache.get(s)
+        if f is None:
+            x, y, z = self.model.agent_position(s)
+            cell = self.model.grid.cell
+            f = (tuple(s[i] for i in self.attrs) + tuple(s[members[s[i]]] for i, members in self.pointers)
+                 + tuple(cell(s, x + dx, y + dy, z + dz) for dx, dy, dz in self.offsets))
+            self.cache[s] = f
+        return f
+
+    def effect(self, s, n):
+        """What `n` changed in `s`: attributes set, position moved, cells changed (relative)."""
+        sets = tuple((i, n[i]) for i in self.attrs if s[i] != n[i])
+        moved = tuple((n[i] - s[i]) if i is not None else 0 for i in self.pos)
+        x, y, z = self.model.agent_position(s)
+        g = self.model.grid
+        cells = []
+        for i in range(g.base, len(s)):
+            if s[i] != n[i]:
+                layer, rest = divmod(i - g.base, self.area)
+                cz, cx = divmod(rest, g.width)
+                cells.append((cx - x, g.layers[layer] - y, cz - z, n[i]))
+        return sets, moved, tuple(cells)
+
+    def apply_effect(self, s, eff):
+        sets, moved, cells = eff
+        n = bytearray(s)
+        for i, v in sets:
+            n[i] = v
+        for i, d in zip(self.pos, moved):
+            if d:
+                v = s[i] + d
+                if not 0 <= v <= self.span[i]:
+                    return None  # off the map: not a state; the caller falls back
+                n[i] = v
+        if cells:
+            g = self.model.grid
+            x, y, z = self.model.agent_position(s)
+            for dx, dy, dz, v in cells:
+                cx, cy, cz = x + dx, y + dy, z + dz
+                if cy not in g.layers or not (0 <= cx < g.width and 0 <= cz < g.depth):
+                    return None
+                n[g.base + g.layers.index(cy) * self.area + cz * g.width + cx] = v
+        return bytes(n)
+
+    # -- terms ---------------------------------------------------------------------------
+    NOTHING = ((), None, ())
+
+    def _is_noop(self, eff):
+        return not eff[0] and not any(eff[1]) and not eff[2]
+
+    def _pointed(self, f):
+        """The features with index attributes left out: what a no-op is remembered by."""
+        return tuple(v for i, v in enumerate(f) if i not in self.index_features)
+
+    @staticmethod
+    def _covers(term, f):
+        return all(allowed is None or v in allowed for allowed, v in zip(term, f))
+
+    def _learn_terms(self, a, eff):
+        """Greedy cover of the effect's examples by terms that cover no example of another
+        effect: a feature that differs between two examples is dropped from their term."""
+        mine = self.examples[a][eff]
+        others = [f for e, fs in self.examples[a].items() if e != eff for f in fs]
+        terms = []
+        for f in mine:
+            for k, t in enumerate(terms):
+                if self._covers(t, f):
+                    break
+                wider = [allowed if allowed is None or v in allowed else None for allowed, v in zip(t, f)]
+                if not any(self._covers(wider, g) for g in others):
+                    terms[k] = wider
+                    break
+            else:
+                terms.append([frozenset((v,)) for v in f])
+        self.terms[(a, eff)] = terms
+        self.general[(a, eff)] = [self._simplest(t, others) for t in terms]
+
+    @staticmethod
+    def _simplest(term, others):
+        """The fewest of a term's constraints that still rule out every example of the
+        other effects (greedy set cover): the most general condition the data allow, so
+        that one turn seen facing north is expected wherever the agent faces north. It
+        may be too general; a wrong prediction adds the example that corrects it."""
+        constraints = [(i, allowed) for i, allowed in enumerate(term) if allowed is not None]
+        keep, left = {}, others
+        while left and constraints:
+            i, allowed = max(constraints, key=lambda c: sum(g[c[0]] not in c[1] for g in left))
+            rest = [g for g in left if g[i] in allowed]
+            if len(rest) == len(left):
+                break  # the features cannot tell these apart
+            keep[i], left = allowed, rest
+        return [keep.get(i) for i in range(len(term))]
+
+    def observe(self, s, a, n):
+        guess = self.predict(s, a)
+        if guess is not None and guess != n:  # the features missed something here: remember it exactly
+            self.wrong.add((s, a))
+        self.fallback.observe(s, a, n)
+        f, eff = self.features(s), self.effect(s, n)
+        if self.exact.get((a, f)) == eff:
+            return
+        self.exact[(a, f)] = eff
+        if self._is_noop(eff):
+            self.noops.add((a, self._pointed(f)))
+        by_effect = self.examples.setdefault(a, {})
+        by_effect.setdefault(eff, []).append(f)
+        for other in by_effect:  # effects whose terms cover this example must be split
+            if self._is_noop(other):
+                continue
+            if other == eff or any(self._covers(t, f) for t in self.general.get((a, other), ())):
+                self._learn_terms(a, other)
+        self.predicted.clear()
+
+    def _generalised(self, f, a):
+        key = (a, f)
+        if key in self.predicted:
+            return self.predicted[key]
+        hits = [eff for eff in self.examples.get(a, ())
+                if not self._is_noop(eff) and any(self._covers(t, f) for t in self.general[(a, eff)])]
+        out = None
+        if len(hits) == 1:
+            out = hits[0]
+        elif not hits and ((a, self._pointed(f)) in self.noops or self._all_fail(f, a)):
+            out = self.NOTHING
+        self.predicted[key] = out
+        return out
+
+    def _all_fail(self, f, a):
+        """DOORMax's failure conditions: every effect `a` is known to have is sure to fail in
+        `f` -- for each of its terms, `a` once did something else in a state that agrees with
+        `f` on all the features the term constrains (the true condition is among them)."""
+        by_effect = self.examples.get(a, {})
+        effects = [e for e in by_effect if not self._is_noop(e)]
+        if not effects:
+            return False  # never seen doing anything: nothing to rule out
+        for eff in effects:
+            others = [g for e, gs in by_effect.items() if e != eff for g in gs]
+            for t in self.terms[(a, eff)]:
+                fixed = [(i, f[i]) for i, allowed in enumerate(t) if allowed is not None]
+                if not any(all(g[i] == v for i, v in fixed) for g in others):
+                    return False
+        return True
+
+    def predict(self, s, a):
+        if (s, a) in self.wrong:
+            return self.fallback.predict(s, a)
+        f = self.features(s)
+        eff = self.exact.get((a, f))
+        if eff is None:
+            eff = self._generalised(f, a)
+        if eff is None:
+            return self.fallback.predict(s, a)
+        if eff is self.NOTHING:
+            return s
+        return self.apply_effect(s, eff) or self.fallback.predict(s, a)
+
+
+LEARNERS = {"tabular": Tabular, "oo": ObjectOriented}
