@@ -99,6 +99,7 @@ def report_cmd(results, plot_path, as_json):
     if not os.path.exists(results):
         raise BccError("no such results file", results)
     contents = read_rows(results)
+    contents.check_is_results(results)
     if contents.bad_lines:
         click.echo(f"{results}: ignored lines that are not rows: {', '.join(map(str, contents.bad_lines))}", err=True)
     if contents.torn_tail:

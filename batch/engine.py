@@ -87,6 +87,7 @@ def run_batch(runs: list[Run], *, out: str, backend: str = "local", workers: int
     start = time.monotonic()
     check_backend(backend, address)
     before = read_rows(out)
+    before.check_is_results(out)
     recorded = {row.get("key"): row for row in before.rows}
     todo = [run for run in runs if run.key not in recorded]
     if todo:

@@ -21,10 +21,20 @@ class Contents:
     bad_lines: list = field(default_factory=list)   # 1-based numbers of lines that are not rows
     torn_tail: int = 0                               # bytes of an unfinished last line
 
+    def check_is_results(self, path: str) -> None:
+        """Refuse a file with content but not one row: it is some other file (a typo in
+        --out or RESULTS), which a sweep must not append to, nor cut a "torn" line from."""
+        if self.rows or not (self.bad_lines or self.torn_tail):
+            return
+        line = self.bad_lines[0] if self.bad_lines else None
+        raise BccError("not a bcc batch results file (JSON Lines, one row per run)", path, line,
+                       1 if line else None)
+
 
 def read_rows(path: str) -> Contents:
     """The rows of a results file (missing file: none). Unreadable lines are reported in
-    `bad_lines`, an unfinished last line in `torn_tail`; neither is an error."""
+    `bad_lines` (a row is a JSON object with a `key` and a `solver`), an unfinished last
+    line in `torn_tail`; neither is an error here (see `Contents.check_is_results`)."""
     try:
         with open(path, "rb") as f:
             data = f.read()
@@ -43,7 +53,7 @@ def read_rows(path: str) -> Contents:
         except (ValueError, UnicodeDecodeError):
             out.bad_lines.append(number)
             continue
-        if isinstance(row, dict):
+        if isinstance(row, dict) and "key" in row and "solver" in row:
             out.rows.append(row)
         else:
             out.bad_lines.append(number)

@@ -63,6 +63,10 @@ def load_sweep(path: str) -> Sweep:
     from ..compiler.source import YList, YMap, check_keys, error_at, load_yaml
     from .dungeons import expand_dungeons
     data = load_yaml(path)
+    for key in data:
+        if key in BUDGETS:  # a likely slip: a limit written beside `budget` instead of in it
+            raise error_at(data, key, f"{key} goes under `budget:` in a sweep, e.g. budget: {{{key}: ...}}",
+                           on_key=True)
     check_keys(data, TOP_KEYS, set(), "a sweep")
     sweep = Sweep()
 

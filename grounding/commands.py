@@ -174,6 +174,8 @@ def command_cmd(dungeon, text, db, model_path, time_limit, as_json):
     from ..solvers import Budget
     from .interpret import plan, rank
     from .learn import space_for
+    if not text.strip():
+        raise BccError("the command is empty")
     model = compile_model(dungeon, None)
     translation, source = _translation(db, model_path)
     space = space_for(dungeon)

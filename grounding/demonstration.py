@@ -208,16 +208,24 @@ def extract(model: Model, snapshots, path: str | None = None) -> Demonstration:
     return Demonstration(dungeon_ref(model), None, actions, states, model)
 
 
-def _difference(model: Model, a: bytes, b: bytes) -> str:
-    """What changed between two states, for error messages."""
+def changes(model: Model, a: bytes, b: bytes) -> list[tuple[str, object, object]]:
+    """(what, value in a, value in b) for every variable and grid cell that differs,
+    variables first; shared by the error messages here and the Minecraft bridge's
+    prediction-vs-world report."""
     da, db = model.decode(a), model.decode(b)
-    changes = [f"{k}: {da[k]} -> {db[k]}" for k in da if da[k] != db[k]]
+    out = [(k, da[k], db[k]) for k in da if da[k] != db[k]]
     g = model.grid
     for y in g.layers:
         for z in range(g.depth):
             for x in range(g.width):
                 ca, cb = g.cell(a, x, y, z), g.cell(b, x, y, z)
                 if ca != cb:
-                    changes.append(f"block ({x}, {y}, {z}): {g.value_names[ca]} -> {g.value_names[cb]}")
-    shown = changes[:4] + ([f"... {len(changes) - 4} more"] if len(changes) > 4 else [])
+                    out.append((f"block ({x}, {y}, {z})", g.value_names[ca], g.value_names[cb]))
+    return out
+
+
+def _difference(model: Model, a: bytes, b: bytes) -> str:
+    """What changed between two states, for error messages."""
+    found = [f"{what}: {before} -> {after}" for what, before, after in changes(model, a, b)]
+    shown = found[:4] + ([f"... {len(found) - 4} more"] if len(found) > 4 else [])
     return "; ".join(shown)

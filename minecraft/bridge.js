@@ -234,13 +234,7 @@ async function setup ({ player, position, yaw, pitch, hotbar, selected }) {
     await bot.look(mfYaw(yaw), mfPitch(pitch), true)
     await until(() => p.heldItemSlot === (selected ?? p.heldItemSlot) && p.position.distanceTo(target) < 0.01, 5000, 'the server seeing the bot in place')
     await settleLook(bot, p, yaw, pitch)
-    // a late position packet from the server may still turn the bot: check it held
-    for (let tries = 0; tries < 3; tries++) {
-      await sleep(150)
-      if (sameAngle(p.yaw, byteAngle(yaw)) && sameAngle(p.pitch, byteAngle(pitch))) break
-      await bot.look(mfYaw(yaw), mfPitch(pitch), true)
-      await settleLook(bot, p, yaw, pitch)
-    }
+    await holdLook(bot, p, yaw, pitch)
   } else {
     // A person: the server moves them. The client may still send its old pose once
     // before it reads ours, so insist until the server sees the new pose hold.
@@ -365,6 +359,17 @@ async function settleLook (bot, p, yaw, pitch) {
   await until(() => sameAngle(p.yaw, wantYaw) && sameAngle(p.pitch, wantPitch), 3000, 'the server seeing the new view direction')
 }
 
+// A late position packet from the server may still turn the bot after settleLook:
+// wait a little, and look again until the view holds (3 tries).
+async function holdLook (bot, p, yaw, pitch) {
+  for (let tries = 0; tries < 3; tries++) {
+    await sleep(150)
+    if (sameAngle(p.yaw, byteAngle(yaw)) && sameAngle(p.pitch, byteAngle(pitch))) return
+    await bot.look(mfYaw(yaw), mfPitch(pitch), true)
+    await settleLook(bot, p, yaw, pitch)
+  }
+}
+
 function sameAngle (a, b) {
   return ((a - b) % 256 + 256) % 256 <= 1 || ((b - a) % 256 + 256) % 256 <= 1
 }
@@ -404,13 +409,7 @@ async function act ({ player, kind, yaw, pitch, slot, target, block, reference, 
     await until(async () => (await serv.overworld.getBlock(dest)).name === item, 3000, `the placed ${item} appearing in the world`)
     await bot.look(mfYaw(yaw), mfPitch(pitch), true)
     await settleLook(bot, p, yaw, pitch)
-    // a late position packet from the server may still turn the bot: check it held
-    for (let tries = 0; tries < 3; tries++) {
-      await sleep(150)
-      if (sameAngle(p.yaw, byteAngle(yaw)) && sameAngle(p.pitch, byteAngle(pitch))) break
-      await bot.look(mfYaw(yaw), mfPitch(pitch), true)
-      await settleLook(bot, p, yaw, pitch)
-    }
+    await holdLook(bot, p, yaw, pitch)
   } else {
     throw new Error(`unknown action kind '${kind}'`)
   }

@@ -15,7 +15,6 @@ import queue
 import shutil
 import subprocess
 import threading
-import time
 from pathlib import Path
 
 from ..errors import BccError
@@ -132,7 +131,8 @@ class Bridge:
         tail = self._log_path.read_bytes().decode("utf-8", "replace").strip().splitlines()[-lines:]
         return ("; last lines of " + str(self._log_path) + ": " + " | ".join(t.strip() for t in tail)) if tail else ""
 
-    def _dead(self) -> MinecraftError:
+    def exit_error(self) -> MinecraftError:
+        """The error for a bridge whose Node process has exited (its status and the log's last lines)."""
         try:
             code = self.proc.wait(2)      # its stdout closed: the exit status follows at once
         except subprocess.TimeoutExpired:
@@ -143,7 +143,7 @@ class Bridge:
     def request(self, op: str, timeout: float | None = None, **args):
         """Send one request and wait for its result; MinecraftError on error, timeout or death."""
         if self._closed or self.proc.poll() is not None:
-            raise self._dead()
+            raise self.exit_error()
         rid = next(self._ids)
         slot = {"done": threading.Event(), "reply": None}
         with self._lock:
@@ -156,7 +156,7 @@ class Bridge:
         except (BrokenPipeError, OSError):
             with self._lock:
                 self._pending.pop(rid, None)
-            raise self._dead() from None
+            raise self.exit_error() from None
         wait = self.timeout if timeout is None else timeout
         finished = slot["done"].wait(wait)
         with self._lock:
@@ -165,7 +165,7 @@ class Bridge:
         if reply is None:
             if not finished:
                 raise MinecraftError(f"the Minecraft bridge did not answer '{op}' within {wait:g} s" + self._log_tail())
-            raise self._dead()
+            raise self.exit_error()
         if not reply.get("ok"):
             raise MinecraftError(f"Minecraft bridge: {op}: {reply.get('error')}")
         return reply.get("result")
@@ -244,14 +244,3 @@ class Bridge:
     def __exit__(self, *exc) -> None:
         self.close()
 
-
-def wait_until(test, timeout: float, what: str, step: float = 0.05):
-    """Poll `test()` until it returns something truthy; MinecraftError after `timeout` s."""
-    end = time.monotonic() + timeout
-    while True:
-        value = test()
-        if value:
-            return value
-        if time.monotonic() > end:
-            raise MinecraftError(f"{what} did not happen within {timeout:g} s")
-        time.sleep(step)

@@ -13,6 +13,7 @@ from pathlib import Path
 import click
 
 from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, goal_option, json_option
+from ..errors import BccError
 
 db_option = click.option("--db", type=click.Path(dir_okay=False), default=None,
                          help="The grounding dataset to add demonstrations to (default: `bcc learn`'s).")
@@ -56,9 +57,11 @@ def setup_cmd(as_json):
 @goal_option
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=".", show_default=True,
               help="Directory for the demonstrations recorded with the in-game 'learn' command.")
-@click.option("--duration", type=float, default=None, help="Stop after this many seconds (default: until Ctrl-C).")
+@click.option("--duration", type=click.FloatRange(min=0, min_open=True), default=None, metavar="SECONDS",
+              help="Stop after this many seconds (default: until Ctrl-C).")
 @db_option
-def serve_cmd(dungeon, port, goal, out_dir, duration, db):
+@json_option
+def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
     """Start a server on 127.0.0.1 with DUNGEON built block by block, for a person to play.
 
     Join with a Minecraft 1.16.5 client (Multiplayer, Direct Connection, 127.0.0.1:PORT; the
@@ -71,17 +74,22 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db):
     model = compile_model(dungeon, goal)
     check_supported(model)
     log_path = _log_path(port)
+    say = (lambda line: click.echo(line, err=True)) if as_json else click.echo
+    written: list = []
     with Bridge(log_path=log_path) as bridge:
         bridge.start(port=port)
         bridge.build(WorldMap(model))
-        click.echo(f"Minecraft {VERSION} server on 127.0.0.1:{port} (offline mode) with {model.name} built at "
-                   f"(0, 64, 0); server log: {log_path}")
-        click.echo(f"Join with a Minecraft {VERSION} client: Multiplayer > Direct Connection > 127.0.0.1:{port}. "
-                   "In the chat: 'learn <command>' stores a demonstration, 'reset' starts over. Ctrl-C stops.")
+        say(f"Minecraft {VERSION} server on 127.0.0.1:{port} (offline mode) with {model.name} built at "
+            f"(0, 64, 0); server log: {log_path}")
+        say(f"Join with a Minecraft {VERSION} client: Multiplayer > Direct Connection > 127.0.0.1:{port}. "
+            "In the chat: 'learn <command>' stores a demonstration, 'reset' starts over. Ctrl-C stops.")
         try:
-            host(model, bridge, Path(out_dir), log=click.echo, duration=duration, db=db)
+            host(model, bridge, Path(out_dir), log=say, duration=duration, db=db, written=written)
         except KeyboardInterrupt:
-            click.echo("stopping the server")
+            say("stopping the server")
+    if as_json:
+        emit_json({"dungeon": model.name, "port": port, "log": str(log_path),
+                   "demonstrations": [str(p) for p in written]})
 
 
 @minecraft.command("run")
@@ -89,9 +97,11 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db):
 @click.option("--solver", default="astar", show_default=True, help="The planner (see `bcc solvers`).")
 @port_option
 @goal_option
-@click.option("--time-limit", type=float, default=60.0, show_default=True, help="Seconds for each (re)plan.")
-@click.option("--max-steps", type=int, default=200, show_default=True, help="Stop after this many actions.")
-@click.option("--watch", type=float, default=0.0, metavar="SECONDS",
+@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), default=60.0, show_default=True,
+              metavar="SECONDS", help="Seconds for each (re)plan.")
+@click.option("--max-steps", type=click.IntRange(min=1), default=200, show_default=True,
+              help="Stop after this many actions.")
+@click.option("--watch", type=click.FloatRange(min=0), default=0.0, metavar="SECONDS",
               help="Wait up to SECONDS for a person to join and watch; the bot then pauses between actions.")
 @json_option
 def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json):
@@ -127,7 +137,8 @@ def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json):
 @click.option("--player", default=None, help="Record this player (default: the first person to join).")
 @click.option("-o", "--output", type=click.Path(dir_okay=False), default=None,
               help="Demonstration file to write (default: DUNGEON-demo-TIME.json).")
-@click.option("--timeout", type=float, default=600.0, show_default=True,
+@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=600.0, show_default=True,
+              metavar="SECONDS",
               help="Seconds to wait for a player and for the demonstration.")
 @click.option("--keep-going", is_flag=True, help="Do not stop at the dungeon's goal; wait for 'done' in the chat.")
 @db_option
@@ -140,8 +151,10 @@ def record_cmd(dungeon, command, port, player, output, timeout, keep_going, db, 
     the player types 'done' (or 'learn <command>', which also names the command).
     """
     from .bridge import VERSION, Bridge
-    from .record import record, store, wait_for_player
+    from .record import NobodyJoined, record, store, wait_for_player
     from .world import WorldMap, check_supported
+    if command is not None and not command.strip():
+        raise BccError("the command is empty: give the words the demonstration carries out, or leave COMMAND out")
     model = compile_model(dungeon, None)
     check_supported(model)
     say = (lambda line: click.echo(line, err=True)) if as_json else click.echo
@@ -151,7 +164,11 @@ def record_cmd(dungeon, command, port, player, output, timeout, keep_going, db, 
         bridge.build(WorldMap(model))
         say(f"Minecraft {VERSION} server on 127.0.0.1:{port} with {model.name}: join with a {VERSION} client "
             f"(Direct Connection, 127.0.0.1:{port}); waiting up to {timeout:g} s ...")
-        name = wait_for_player(bridge, player, timeout)
+        try:
+            name = wait_for_player(bridge, player, timeout)
+        except NobodyJoined as exc:
+            click.echo(str(exc), err=True)
+            sys.exit(EXIT_NO_SOLUTION)
         say(f"{name} joined: recording{f' {command!r}' if command else ''} (type 'done' in the chat to finish)")
         demo, recording = record(model, bridge, command, player=name, log=say,
                                  timeout=max(1.0, timeout - (time.monotonic() - t0)), stop_at_goal=not keep_going)

@@ -165,7 +165,7 @@ def record(model: Model, bridge: Bridge, command: str | None, player: str | None
         event = bridge.next_event(max(0.0, next_poll - time.monotonic()))
         if event is not None:
             if event.get("event") == "exit":
-                raise bridge._dead()
+                raise bridge.exit_error()
             if event.get("event") in ("left", "bot_left") and event.get("player") == player:
                 why = f"{player} left the game"
                 break
@@ -199,6 +199,10 @@ def record(model: Model, bridge: Bridge, command: str | None, player: str | None
     return rec.demonstration(text), rec.recording
 
 
+class NobodyJoined(BccError):
+    """The wait for a player ran out: a budget, not bad input (`bcc minecraft record` exits 1)."""
+
+
 def wait_for_player(bridge: Bridge, player: str | None, timeout: float) -> str:
     """The name of the player to record: `player` once online, else the first person in."""
     end = time.monotonic() + timeout
@@ -208,11 +212,11 @@ def wait_for_player(bridge: Bridge, player: str | None, timeout: float) -> str:
             return player or people[0]
         left = end - time.monotonic()
         if left <= 0:
-            raise BccError(f"nobody joined within {timeout:g} s"
+            raise NobodyJoined(f"nobody joined within {timeout:g} s"
                            + (f" (waiting for {player})" if player else ""))
         event = bridge.next_event(min(left, 0.5))
         if event is not None and event.get("event") == "exit":
-            raise bridge._dead()
+            raise bridge.exit_error()
 
 
 def store(demo, path, db: str | None = None) -> dict:
@@ -243,15 +247,17 @@ def store(demo, path, db: str | None = None) -> dict:
 
 
 def host(model: Model, bridge: Bridge, out_dir, log: Callable[[str], None] = print,
-         duration: float | None = None, interval: float = POLL_SECONDS, stop=None, db: str | None = None) -> list:
+         duration: float | None = None, interval: float = POLL_SECONDS, stop=None, db: str | None = None,
+         written: list | None = None) -> list:
     """`bcc minecraft serve`: follow the first person in the world; 'learn <command>' in the
     chat stores what they did since the start (or the last 'learn'/'reset') and starts over.
     Runs for `duration` seconds (None: until interrupted) or until the `stop` event is set.
-    Returns the demonstration files written."""
+    Returns the demonstration files written, also appended to `written` as they are, so a
+    caller interrupted by Ctrl-C still knows them."""
     from pathlib import Path
     out_dir = Path(out_dir)
     rec: Recorder | None = None
-    written = []
+    written = [] if written is None else written
     announced_goal = False
     end = None if duration is None else time.monotonic() + duration
     next_poll = time.monotonic()
@@ -260,7 +266,7 @@ def host(model: Model, bridge: Bridge, out_dir, log: Callable[[str], None] = pri
         if event is not None:
             kind, who = event.get("event"), event.get("player")
             if kind == "exit":
-                raise bridge._dead()
+                raise bridge.exit_error()
             people = {p["name"] for p in bridge.players() if not p["bot"]} if kind == "joined" else set()
             if kind == "joined" and who in people:
                 if rec is None:

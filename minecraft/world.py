@@ -223,13 +223,5 @@ def describe(model: Model, state: bytes) -> str:
 
 def difference(model: Model, predicted: bytes, observed: bytes) -> list:
     """Human-readable differences between two states (variables, then cells)."""
-    a, b = model.decode(predicted), model.decode(observed)
-    out = [f"{k}: predicted {a[k]}, observed {b[k]}" for k in a if a[k] != b[k]]
-    g = model.grid
-    for y in g.layers:
-        for z in range(g.depth):
-            for x in range(g.width):
-                ca, cb = g.cell(predicted, x, y, z), g.cell(observed, x, y, z)
-                if ca != cb:
-                    out.append(f"block ({x}, {y}, {z}): predicted {g.value_names[ca]}, observed {g.value_names[cb]}")
-    return out
+    from ..grounding.demonstration import changes
+    return [f"{what}: predicted {a}, observed {b}" for what, a, b in changes(model, predicted, observed)]

@@ -54,9 +54,11 @@ def import_group():
 @click.argument("domain", type=click.Path(dir_okay=False))
 @click.argument("problem", type=click.Path(dir_okay=False))
 @click.option("--solver", default="astar", show_default=True, help="A bcc solver (see `bcc solvers`).")
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS")
-@click.option("--max-states", type=click.IntRange(min=1))
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE.")
+@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS",
+              help="Stop the search after this many seconds.")
+@click.option("--max-states", type=click.IntRange(min=1), help="Stop the search after storing this many states.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
+              help="Write the plan to FILE, one action a line (atomically).")
 @json_option
 def import_pddl_cmd(domain, problem, solver, time_limit, max_states, output, as_json):
     """Compile a STRIPS PDDL DOMAIN + PROBLEM into a bcc model and solve it.

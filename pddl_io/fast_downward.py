@@ -21,6 +21,10 @@ from pathlib import Path
 from ..errors import BccError
 
 DEFAULT_SEARCH = "astar(lmcut())"
+# The driver's exit codes for "ran out of time or memory": translate (20, 21), search
+# (22-24), and a component killed by the CPU-time limit (SIGXCPU; the driver exits with
+# its negative return code, 256 - 24 = 232).
+OUT_OF_BUDGET = (20, 21, 22, 23, 24, 256 - 24)
 INSTALL_HINT = 'Fast Downward is not installed: pip install "bcc[pddl]" (the PyPI package up-fast-downward)'
 
 
@@ -75,7 +79,7 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
             return FdRun(True, plan, cost, seconds, "solved", "")
         if proc.returncode in (11, 12):
             return FdRun(False, [], None, seconds, "no_solution", "no plan exists (Fast Downward proved it)")
-        if proc.returncode in (22, 23, 24):
+        if proc.returncode in OUT_OF_BUDGET:
             return FdRun(False, [], None, seconds, "budget", "stopped: Fast Downward ran out of time or memory")
         tail = (proc.stderr.strip() or proc.stdout.strip()).splitlines()[-3:]
         return FdRun(False, [], None, seconds, "error",

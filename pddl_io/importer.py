@@ -36,10 +36,25 @@ def _parse(domain: str, problem: str):
         try:
             parsed = reader.parse_problem(*files)
         except Exception as exc:  # noqa: BLE001 - pyparsing and unified-planning errors alike
-            line, col = getattr(exc, "lineno", None), getattr(exc, "col", None)
-            msg = str(getattr(exc, "msg", None) or exc).splitlines()[0]
-            raise BccError(f"cannot read PDDL: {msg}", blame, line, col) from None
+            raise _read_error(exc, blame) from None
     return parsed
+
+
+def _read_error(exc: Exception, path: str) -> BccError:
+    """One BccError from pyparsing's (lineno, col) or unified-planning's message, which
+    names the place in words ("... line: 5, col 19 to ...") or, for a name the domain
+    does not declare, is a bare KeyError."""
+    import re
+    if isinstance(exc, KeyError):
+        return BccError(f"cannot read PDDL: unknown name {exc.args[0]!r} (a type, predicate or object "
+                        "the domain does not declare)", path)
+    msg = str(getattr(exc, "msg", None) or exc).splitlines()[0]
+    line, col = getattr(exc, "lineno", None), getattr(exc, "col", None)
+    where = re.search(r"line:? (\d+),? col:? (\d+)", msg)
+    if line is None and where:
+        line, col = int(where[1]), int(where[2])
+        msg = msg[:where.start()].rstrip(" ,.").removesuffix(" From").removesuffix(" found at").rstrip(" ,.")
+    return BccError(f"cannot read PDDL: {msg}", path, line, col)
 
 
 def _literals(expr, where: str) -> list | None:
@@ -71,9 +86,9 @@ def _name(grounded, back) -> str:
 
 def import_pddl(domain: str, problem: str):
     """Parse, ground and compile DOMAIN + PROBLEM into a `bcc.model.Model`."""
-    from unified_planning.shortcuts import CompilationKind, Compiler
     from ..model import Grid, Model, Variable
-    parsed = _parse(domain, problem)
+    parsed = _parse(domain, problem)           # first: it says how to install unified-planning
+    from unified_planning.shortcuts import CompilationKind, Compiler
     kind = parsed.kind
     if kind.has_numeric_fluents() or kind.has_continuous_time() or kind.has_conditional_effects():
         raise BccError("bcc imports STRIPS PDDL (with typing, negative preconditions, equality); "

@@ -2,9 +2,11 @@
 from __future__ import annotations
 
 import os
+import sys
 
 import click
 
+from ..cli import emit_json, json_option
 from ..errors import BccError
 
 
@@ -19,13 +21,15 @@ from ..errors import BccError
               metavar="MB", help="Memory a job may add to its process (default and cap of max_memory_mb).")
 @click.option("--max-time-limit", type=click.FloatRange(min=0, min_open=True), default=300, show_default=True,
               metavar="SECONDS", help="Cap on a solve's time_limit.")
-def serve_cmd(host, port, workers, max_body_kb, job_memory_mb, max_time_limit):
+@json_option
+def serve_cmd(host, port, workers, max_body_kb, job_memory_mb, max_time_limit, as_json):
     """Serve the JSON API and the web viewer (open http://HOST:PORT/).
 
     \b
     Examples:
       bcc serve                         # http://127.0.0.1:8765/
       bcc serve --port 9000 --workers 4
+      bcc serve --port 0 --json         # any free port; prints {"url": ...} once listening
     """
     try:
         import uvicorn
@@ -34,8 +38,17 @@ def serve_cmd(host, port, workers, max_body_kb, job_memory_mb, max_time_limit):
         raise BccError(f'bcc serve needs {exc.name}: pip install "bcc[serve]"') from None
     settings = Settings(workers=workers or os.cpu_count() or 1, max_body_bytes=max_body_kb * 1000,
                         job_memory_mb=job_memory_mb, max_time_limit=max_time_limit)
-    click.echo(f"bcc serve: http://{host}:{port}/ ({settings.workers} worker(s); Ctrl-C stops)", err=True)
-    uvicorn.run(create_app(settings), host=host, port=port, log_level="warning")
+    from .listen import bind, url
+    sock = bind(host, port)
+    if as_json:
+        emit_json({"url": url(sock), "port": sock.getsockname()[1], "workers": settings.workers,
+                   "max_body_bytes": settings.max_body_bytes, "job_memory_mb": job_memory_mb,
+                   "max_time_limit": max_time_limit})
+        sys.stdout.flush()
+    click.echo(f"bcc serve: {url(sock)} ({settings.workers} worker(s); Ctrl-C stops)", err=True)
+    server = uvicorn.Server(uvicorn.Config(create_app(settings), log_level="warning"))
+    with sock:
+        server.run(sockets=[sock])
 
 
 COMMANDS = [serve_cmd]

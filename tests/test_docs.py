@@ -37,7 +37,8 @@ ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
-PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md"]
+PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md"]
+NEEDS = {"pddl.md": "unified_planning"}  # pages whose commands need an optional extra: the module it brings
 
 FENCE = re.compile(r"^```([^\n`]*)\n(.*?)^```[ \t]*$", re.M | re.S)
 FILE_MARK = re.compile(r"<!--\s*(file|append):\s*(\S+)\s*-->\s*\Z")
@@ -173,7 +174,8 @@ def followed(tmp_path_factory):
     """Every tutorial page, followed in parallel, each in its own folder: page -> problems."""
     pool = ThreadPoolExecutor(max_workers=len(PAGES))
     futures = {page: pool.submit(follow, page, tmp_path_factory.mktemp(page.removesuffix(".md")))
-               for page in PAGES if page != "add-a-solver.md" or can_build_plugins() is None}
+               for page in PAGES if (page != "add-a-solver.md" or can_build_plugins() is None)
+               and (page not in NEEDS or importlib.util.find_spec(NEEDS[page]) is not None)}
     yield futures
     pool.shutdown(wait=True)
 
@@ -261,6 +263,14 @@ def test_add_a_solver_page_works_word_for_word(followed):
     if "add-a-solver.md" not in followed:
         pytest.skip(can_build_plugins())
     problems = followed["add-a-solver.md"].result()
+    assert not problems, problems[0]
+
+
+@pytest.mark.parametrize("page", ["grounding.md", "batch.md", "pddl.md"])
+def test_feature_pages_work_word_for_word(followed, page):
+    if page not in followed:
+        pytest.skip(f"docs/{page} needs the {NEEDS[page]} module (an optional extra)")
+    problems = followed[page].result()
     assert not problems, problems[0]
 
 

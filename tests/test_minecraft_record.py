@@ -4,38 +4,22 @@ what it did. CI installs the Node packages (`npm ci` in minecraft/) first; the
 tests skip, saying why, only where Node or those packages are missing."""
 from __future__ import annotations
 
-import shutil
-import socket
 import threading
 import time
 
 import pytest
 
 from bcc.minecraft.actions import geometry
-from bcc.minecraft.bridge import Bridge, installed, node_dir
 from bcc.minecraft.record import host, record
 from bcc.minecraft.world import WorldMap
+from minecraft_harness import free_port, open_bridge, require_minecraft
 
-if not shutil.which("node"):
-    pytest.skip("Node.js is not installed: the Minecraft server cannot run", allow_module_level=True)
-if not installed():
-    pytest.skip(f"the Minecraft packages are not installed in {node_dir()}: run `bcc minecraft setup`",
-                allow_module_level=True)
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+require_minecraft()
 
 
 @pytest.fixture
 def bridge(tmp_path):
-    b = Bridge(log_path=tmp_path / "bridge.log", timeout=30)
-    try:
-        yield b
-    finally:
-        b.close()
+    yield from open_bridge(tmp_path)
 
 
 def drive(bridge, model, player, actions, pause=0.05):
