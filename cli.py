@@ -325,55 +325,81 @@ def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_
 
 @main.command("learn-curve")
 @click.argument("dungeon")
-@click.option("--solver", default="rmax", show_default=True, help="A learning solver: rmax or qlearning.")
+@click.option("--learner", "learners", multiple=True, type=click.Choice(["rmax/tabular", "rmax/oo", "qlearning"]),
+              help="A learner to run (repeat for more) [default: rmax/tabular, rmax/oo and qlearning].")
+@click.option("--solver", "solvers", multiple=True, type=click.Choice(["rmax", "qlearning"]),
+              help="Every learner of a learning solver (rmax: tabular and oo); repeatable, adds to --learner.")
 @click.option("--episodes", type=click.IntRange(min=1), default=10, show_default=True)
-@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--seeds", "n_seeds", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Run each learner with this many seeds: --seed, --seed + 1, ...")
+@click.option("--seed", type=int, default=0, show_default=True, help="The first seed.")
+@click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Runs at once (each a process of its own, through the batch API).")
+@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS",
+              help="Stop each run after this many seconds.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write a PNG plot (needs the `plot` extra).")
 @json_option
 @goal_option
-def learn_curve_cmd(dungeon, solver, episodes, seed, output, as_json, goal):
-    """Steps per episode of a learning solver, for each model learner (rmax: tabular and oo)."""
-    from .solvers import Budget, get_solver
-    if solver not in ("rmax", "qlearning"):
-        raise BccError("learn-curve takes a learning solver: rmax or qlearning")
-    model = compile_model(dungeon, goal)
-    budget = Budget.default()
-    optimal = get_solver("astar")(model, budget)
-    runs = {}
-    for learner in (["tabular", "oo"] if solver == "rmax" else [None]):
-        options = {"learner": learner} if learner else {}
-        result = get_solver(solver)(model, budget, episodes=episodes, seed=seed,
-                                    optimal_cost=optimal.cost if optimal.solved else None, **options)
-        runs[f"{solver}/{learner}" if learner else solver] = {
-            "steps": [e["steps"] for e in result.episodes], "converged_episode": result.converged_episode}
+def learn_curve_cmd(dungeon, learners, solvers, episodes, n_seeds, seed, workers, time_limit, output, as_json, goal):
+    """Steps per episode of the learning solvers on DUNGEON: R-max with each model
+    learner and Q-learning, each with --seeds seeds. Exit 1 if a run failed or ran out of time."""
+    from .learning_curves import learners_from, learning_curves, mean_curve
+    names = learners_from(learners, solvers)
     if output:
-        _plot_curves(runs, optimal.cost if optimal.solved else None, f"{model.name}: steps per episode", output)
+        _plot_curves({}, None, "", None)  # a missing matplotlib is an error before anything runs
+    data = learning_curves(dungeon, goal=goal, learners=names, episodes=episodes,
+                           seeds=list(range(seed, seed + n_seeds)), workers=workers, time_limit=time_limit)
+    if output:
+        _plot_curves(data["runs"], data["optimal_cost"], f"{data['dungeon']}: steps per episode", output)
+    stopped = [(name, s, error or f"stopped by its time limit after {len(steps)} of {episodes} episodes")
+               for name, run in data["runs"].items()
+               for s, error, status, steps in zip(data["seeds"], run["errors"], run["status"], run["steps"])
+               if error or status == "budget"]
     if as_json:
-        emit_json({"dungeon": model.name, "optimal_cost": optimal.cost, "runs": runs})
-        return
-    click.echo(f"{model.name}: optimal cost {optimal.cost}")
-    for name, run in runs.items():
-        click.echo(f"  {name:<16} converged at episode {run['converged_episode']}: steps {run['steps']}")
+        emit_json(data)
+    else:
+        click.echo(f"{data['dungeon']}: optimal cost {data['optimal_cost']}, {episodes} episodes, "
+                   f"seeds {', '.join(map(str, data['seeds']))}")
+        for name, run in data["runs"].items():
+            mean = mean_curve(run["steps"])[0]
+            converged = ", ".join("-" if c is None else str(c) for c in run["converged_episode"])
+            click.echo(f"  {name:<14} converged at episode {converged}; mean steps "
+                       f"{' '.join(f'{m:g}' for m in (round(m, 1) for m in mean))}")
+    for name, s, why in stopped:
+        click.echo(f"{data['dungeon']}: {name} seed {s}: {why}", err=True)
+    sys.exit(EXIT_NO_SOLUTION if stopped else EXIT_OK)
 
 
-def _plot_curves(runs: dict, optimal, title: str, output: str) -> None:
+def _plot_curves(runs: dict, optimal, title: str, output: str | None) -> None:
+    """Mean steps per episode of each learner over its seeds, with the min-max band;
+    with output None, only check that matplotlib is there."""
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
         raise BccError('plotting needs matplotlib: pip install "bcc[plot]"') from None
+    if output is None:
+        return
     import io
+    from .learning_curves import mean_curve
     fig, ax = plt.subplots(figsize=(7, 4))
     for name, run in runs.items():
-        ax.plot(range(1, len(run["steps"]) + 1), run["steps"], marker="o", label=name)
+        mean, low, high = mean_curve(run["steps"])
+        if not mean:
+            continue
+        x = range(1, len(mean) + 1)
+        n = sum(1 for s in run["steps"] if s)
+        line, = ax.plot(x, mean, marker="o", markersize=3, label=f"{name} (mean of {n} seeds)" if n > 1 else name)
+        if n > 1:
+            ax.fill_between(x, low, high, color=line.get_color(), alpha=0.2, linewidth=0)
     if optimal is not None:
         ax.axhline(optimal, color="gray", linestyle="--", label=f"optimal ({optimal})")
     ax.set_xlabel("episode")
-    ax.set_ylabel("steps")
+    ax.set_ylabel("steps (band: min to max over seeds)")
     ax.set_yscale("log")
     ax.set_title(title)
-    ax.legend()
+    ax.legend(fontsize="small")
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=100)
     plt.close(fig)

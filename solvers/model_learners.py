@@ -71,6 +71,7 @@ class ObjectOriented:
         self.general = {}        # (action, effect) -> the same terms with the fewest constraints
         self.noops = set()       # (action, features but index attributes) where nothing happened
         self.predicted = {}      # (action, features) -> effect or None, until knowledge changes
+        self.failure_index = {}  # (action, effect, term) -> failure examples projected on its features
         self.fallback = Tabular(model, m)
         self.wrong = set()       # (state, action) where a generalised prediction failed
 
@@ -206,6 +207,7 @@ class ObjectOriented:
             if other == eff or any(self._covers(t, f) for t in self.general.get((a, other), ())):
                 self._learn_terms(a, other)
         self.predicted.clear()
+        self.failure_index.clear()
 
     def _generalised(self, f, a):
         key = (a, f)
@@ -230,12 +232,23 @@ class ObjectOriented:
         if not effects:
             return False  # never seen doing anything: nothing to rule out
         for eff in effects:
-            others = [g for e, gs in by_effect.items() if e != eff for g in gs]
-            for t in self.terms[(a, eff)]:
-                fixed = [(i, f[i]) for i, allowed in enumerate(t) if allowed is not None]
-                if not any(all(g[i] == v for i, v in fixed) for g in others):
+            for k, t in enumerate(self.terms[(a, eff)]):
+                fixed, seen = self._failures(a, eff, k, t)
+                if tuple(f[i] for i in fixed) not in seen:
                     return False
         return True
+
+    def _failures(self, a, eff, k, t):
+        """The features term k of `eff` constrains, and the other effects' examples
+        projected onto them (built once per change of knowledge)."""
+        key = (a, eff, k)
+        hit = self.failure_index.get(key)
+        if hit is None:
+            fixed = tuple(i for i, allowed in enumerate(t) if allowed is not None)
+            seen = {tuple(g[i] for i in fixed)
+                    for e, gs in self.examples[a].items() if e != eff for g in gs}
+            hit = self.failure_index[key] = (fixed, seen)
+        return hit
 
     def predict(self, s, a):
         if (s, a) in self.wrong:

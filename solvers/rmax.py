@@ -100,7 +100,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
     actions = list(range(len(model.action_names))) if all_actions or not model.search_actions \
         else list(model.search_actions)
     dead_value = -1.0 / (1.0 - gamma)
-    history, steps_total, last_plan = [], 0, []
+    history, steps_total, last_plan, replanned = [], 0, [], False
     for episode in range(episodes):
         s, plan, ret, kind = model.initial, [], 0.0, None
         q = _plan_values(model, know, s, actions, gamma, delta, dead_value)
@@ -114,7 +114,8 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             plan.append(a)
             ret -= 1
             steps_total += 1
-            if steps_total % 256 == 0:
+            if steps_total % 256 == 0 or replanned:  # planning can be slow: check after it too
+                replanned = False
                 which = meter.check(steps_total, steps_total, 0)
                 if which:
                     from .base import budget_result
@@ -127,6 +128,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
                 break
             if planned != n or not q.covers(s):  # a surprise, or beyond what was planned: plan again
                 q = _plan_values(model, know, s, actions, gamma, delta, dead_value)
+                replanned = True
         history.append({"episode": episode + 1, "steps": len(plan), "return": ret, "success": kind == "goal"})
         last_plan = plan if kind == "goal" else []
     # converged_episode: the first episode after which every episode's plan has the optimal

@@ -37,7 +37,8 @@ ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
-PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md"]
+PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md",
+         "learning-curves.md"]
 NEEDS = {"pddl.md": "unified_planning"}  # pages whose commands need an optional extra: the module it brings
 
 FENCE = re.compile(r"^```([^\n`]*)\n(.*?)^```[ \t]*$", re.M | re.S)
@@ -266,7 +267,7 @@ def test_add_a_solver_page_works_word_for_word(followed):
     assert not problems, problems[0]
 
 
-@pytest.mark.parametrize("page", ["grounding.md", "batch.md", "pddl.md"])
+@pytest.mark.parametrize("page", ["grounding.md", "batch.md", "pddl.md", "learning-curves.md"])
 def test_feature_pages_work_word_for_word(followed, page):
     if page not in followed:
         pytest.skip(f"docs/{page} needs the {NEEDS[page]} module (an optional extra)")

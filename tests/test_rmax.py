@@ -25,7 +25,9 @@ def test_rmax_converges_on_grid_to_the_optimal_plan(learner):
     result = get_solver("rmax")(compiled("grid"), BUDGET, learner=learner, episodes=8, seed=0, optimal_cost=cost)
     assert result.solved and result.cost == cost
     assert replay(compiled("grid"), [(a, 1, 1) for a in result.plan]).valid
-    assert result.converged_episode is not None and result.converged_episode <= 4
+    # converged_episode: the episodes spent learning before every plan is optimal (issue 5:
+    # the object-oriented learner within 2, tabular within 4, as the reference's 3-4)
+    assert result.converged_episode is not None and result.converged_episode <= (2 if learner == "oo" else 4)
     assert [e["steps"] for e in result.episodes][-1] == cost
 
 
@@ -60,12 +62,69 @@ def test_cli_reports_episodes_and_convergence():
     assert bad.exit_code == 2
 
 
-def test_learn_curve_reports_both_learners(tmp_path):
-    result = CliRunner().invoke(main, ["learn-curve", "grid", "--episodes", "4", "--json"], catch_exceptions=False)
-    data = json.loads(result.stdout)
-    assert set(data["runs"]) == {"rmax/tabular", "rmax/oo"} and data["optimal_cost"] == 7
-    assert all(len(run["steps"]) == 4 for run in data["runs"].values())
+def _curve(*args):
+    result = CliRunner().invoke(main, ["learn-curve", "grid", *args, "--json"], catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def test_learn_curve_runs_both_rmax_models_and_qlearning_by_default():
+    data = _curve("--episodes", "4", "--seeds", "2", "--seed", "3")
+    assert list(data["runs"]) == ["rmax/tabular", "rmax/oo", "qlearning"]
+    assert data["optimal_cost"] == optimal("grid") and data["seeds"] == [3, 4]
+    for name, run in data["runs"].items():
+        assert len(run["steps"]) == 2 and all(len(steps) == 4 for steps in run["steps"])
+        assert len(run["converged_episode"]) == 2 and run["errors"] == [None, None]
+    # each item is the same learner the solver runs alone, with that seed
+    alone = get_solver("rmax")(compiled("grid"), BUDGET, learner="oo", episodes=4, seed=4, optimal_cost=7)
+    assert data["runs"]["rmax/oo"]["steps"][1] == [e["steps"] for e in alone.episodes]
+    assert data["runs"]["rmax/oo"]["converged_episode"][1] == alone.converged_episode
+    assert data["runs"]["rmax/oo"]["success"][1] == [e["success"] for e in alone.episodes]
+    q = get_solver("qlearning")(compiled("grid"), BUDGET, episodes=4, seed=3, optimal_cost=7)
+    assert data["runs"]["qlearning"]["steps"][0] == [e["steps"] for e in q.episodes]
+
+
+def test_learn_curve_selects_learners():
+    assert list(_curve("--episodes", "2", "--solver", "rmax")["runs"]) == ["rmax/tabular", "rmax/oo"]
+    assert list(_curve("--episodes", "2", "--learner", "qlearning", "--learner", "rmax/oo")["runs"]) == \
+        ["qlearning", "rmax/oo"]
+    bad = CliRunner().invoke(main, ["learn-curve", "grid", "--learner", "astar"])
+    assert bad.exit_code == 2
+
+
+def test_learn_curve_numbers_do_not_depend_on_the_workers():
+    def numbers(data):
+        return {name: (run["steps"], run["success"], run["converged_episode"], run["solved"], run["status"])
+                for name, run in data["runs"].items()}
+    one = _curve("--episodes", "5", "--seeds", "3", "--workers", "1")
+    two = _curve("--episodes", "5", "--seeds", "3", "--workers", "2")
+    assert two["workers"] == 2 and numbers(one) == numbers(two)
+    # different seeds really differ somewhere (else the seeds axis would be meaningless)
+    assert any(len({tuple(s) for s in run["steps"]}) > 1 for run in one["runs"].values())
+
+
+def test_learn_curve_writes_a_png(tmp_path):
     pytest.importorskip("matplotlib")
     png = tmp_path / "curve.png"
-    assert CliRunner().invoke(main, ["learn-curve", "grid", "--episodes", "3", "-o", str(png)]).exit_code == 0
+    result = CliRunner().invoke(main, ["learn-curve", "grid", "--episodes", "3", "--seeds", "2", "-o", str(png)])
+    assert result.exit_code == 0, result.output
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "rmax/tabular" in result.output and "qlearning" in result.output
+
+
+def test_a_failed_run_is_reported_and_the_others_kept(monkeypatch):
+    from bcc import learning_curves
+    real = learning_curves.run_curve
+
+    def crash_qlearning(run):
+        if run.learner == "qlearning":
+            raise RuntimeError("boom")
+        return real(run)
+    monkeypatch.setattr(learning_curves, "run_curve", crash_qlearning)
+    result = CliRunner().invoke(main, ["learn-curve", "grid", "--episodes", "2", "--json"])
+    assert result.exit_code == 1
+    data = json.loads(result.stdout)
+    assert data["runs"]["qlearning"]["errors"] == ["RuntimeError: boom"]
+    assert data["runs"]["qlearning"]["steps"] == [None] and data["runs"]["qlearning"]["status"] == ["error"]
+    assert len(data["runs"]["rmax/oo"]["steps"][0]) == 2 and data["runs"]["rmax/oo"]["errors"] == [None]
+    assert "grid: qlearning seed 0: RuntimeError: boom" in result.stderr
