@@ -217,14 +217,17 @@ def corpus_group():
 @corpus_group.command("generate")
 @click.option("--pairs", type=click.IntRange(min=10), default=360, show_default=True)
 @click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Plan demonstrations on this many processes (through the batch API); "
+                   "the output is the same for any number.")
 @json_option
-def corpus_generate_cmd(pairs, seed, as_json):
+def corpus_generate_cmd(pairs, seed, workers, as_json):
     """Rebuild grounding/corpus/ (dungeons and pairs.jsonl) with a fixed seed (takes minutes)."""
     from ..cli import progress_enabled
     from . import corpus
     show = progress_enabled()
-    stats = corpus.generate(pairs, seed, progress=(lambda k, n: click.echo(f"\r  {k}/{n}", err=True, nl=False))
-                            if show else None)
+    progress = (lambda k, n: click.echo(f"\r  {k}/{n}", err=True, nl=False)) if show else None
+    stats = corpus.generate(pairs, seed, workers=workers, progress=progress)
     if show:
         click.echo("", err=True)
     if as_json:

