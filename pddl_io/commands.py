@@ -19,7 +19,7 @@ def export_group():
 @click.option("-o", "--output", "out_dir", required=True, type=click.Path(file_okay=False),
               help="Directory for domain.pddl and problem.pddl (created if missing).")
 @click.option("--max-states", type=click.IntRange(min=1), default=None,
-              help="Reachable states the export may enumerate to find each variable's values [default: 300000].")
+              help="Abstract states the export may explore to bound each variable's values [default: 300000].")
 @json_option
 @goal_option
 def export_pddl_cmd(dungeon, out_dir, max_states, as_json, goal):
@@ -42,7 +42,7 @@ def export_pddl_cmd(dungeon, out_dir, max_states, as_json, goal):
         return
     click.echo(f"wrote {files['domain.pddl']['path']} and {files['problem.pddl']['path']}: "
                f"{task.stats['operators']} operators over {task.stats['facts']} facts "
-               f"({task.stats['reachable_states']:,} reachable states enumerated)")
+               f"(value domains: a fixpoint over {task.stats['abstract_states']:,} abstract states)")
 
 
 @click.group("import")

@@ -1,18 +1,31 @@
 """The values each state byte can take, which bounds the size of the grounded export.
 
-Why: a grounded encoding needs one fact per (byte, value). The declared ranges are exact
+Why: a grounded encoding needs one fact per (byte, value), and its operators are the
+leaves of each action's decision tree over those values. The declared ranges are exact
 but large (an inventory count has 65 values, and a mined block can land in any of 9
-slots), so when the reachable state space is small enough we enumerate it -- every
-action, from the initial state, not expanding failure states -- and keep only the values
-that occur. That is exact for the export: a transition from a reachable state leads to a
-reachable state, whose values are all kept, so the export's reachable graph is the
-model's. When the enumeration exceeds its cap the export stops with a clear error: with
-the declared ranges a grounded encoding of, e.g., the tough maze (six stones, nine
-slots, counts to 64) runs to millions of operators, which no planner grounds in time.
+slots), and enumerating the reachable states to keep only the values that occur does not
+scale (the tough maze's six stones give millions of states). So, as Fast Downward's
+translator does, we compute a *reachability fixpoint over value domains*: start from the
+initial value of every byte, ground every action over the current domains (symbolic.py),
+add every value an applicable operator writes, and repeat until nothing is added.
+
+A plain relaxed fixpoint (any combination of known values may co-occur) lets a counter
+grow without bound: mining "a stone" stays possible forever, so every count reaches 64
+and every slot fills. The fixpoint therefore tracks a coarser but still exact-enough
+abstraction jointly: an abstract state is (every byte that is neither a grid cell nor the
+agent's position, exactly; the *histogram* of grid cell values). An operator applies to
+an abstract state when its precondition on the exact bytes matches and the histogram has
+the cell values it requires; its effect moves cell values between histogram bins. Mining
+a stone then consumes one from the histogram, so the counts stay within the stones that
+exist. This over-approximates the reachable states (the position and which cell holds
+which value are forgotten), so every reachable state's values are kept: a transition from
+a state whose values are all in the domains is one of the grounded leaves, and it writes
+values the fixpoint added. The export's reachable graph is therefore the model's.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections import Counter
+from dataclasses import dataclass, field
 
 DEFAULT_MAX_STATES = 300_000
 
@@ -20,38 +33,134 @@ DEFAULT_MAX_STATES = 300_000
 @dataclass
 class Domains:
     values: tuple         # per state byte: the tuple of values kept
-    source: str           # how they were found: "reachable" (enumerated)
-    states: int           # reachable states enumerated
+    source: str           # how they were found: "fixpoint"
+    states: int           # abstract states of the last round
+    rounds: int = 0       # grounding rounds until the fixpoint
+    leaves: list = field(default_factory=list)  # per action: its leaves over `values` (reused by task.py)
 
 
-def reachable(model, max_states: int) -> tuple | None:
-    """Per byte, the values seen in reachable states; None if there are more than max_states."""
-    start = model.initial
+def _cell_bytes(model) -> range:
+    g = model.grid
+    return range(g.base, g.base + len(g.layers) * g.width * g.depth)
+
+
+def _guarded(apply, failure):
+    def guarded(s):
+        return None if failure is not None and failure(s) else apply(s)
+    return guarded
+
+
+def _abstract_ops(leaves, exact, cells, n_values):
+    """Group transition leaves by their effect on abstract states.
+
+    Key: (precondition on exact bytes, cell values required, writes of exact bytes,
+    histogram change); value: the (byte, value) pairs its leaves write elsewhere."""
+    groups: dict = {}
+    for action_leaves in leaves:
+        for leaf in action_leaves:
+            if not isinstance(leaf.result, dict):
+                continue
+            pre = {i: vs[0] for i, vs in leaf.allowed.items()}
+            pre_e = tuple(sorted((i, v) for i, v in pre.items() if i in exact))
+            need = tuple(sorted(Counter(v for i, v in pre.items() if i in cells).items()))
+            w_e = tuple(sorted((i, v) for i, v in leaf.result.items() if i in exact))
+            delta = [0] * n_values
+            other = set()
+            for i, v in leaf.result.items():
+                if i in cells:
+                    delta[pre[i]] -= 1
+                    delta[v] += 1
+                if i not in exact:
+                    other.add((i, v))
+            groups.setdefault((pre_e, need, w_e, tuple(delta)), set()).update(other)
+    return groups
+
+
+def _abstract_reach(initial, exact_idx, cells, n_values, groups, max_states):
+    """Abstract states reachable from `initial`; the values written; None past max_states."""
+    start = (tuple(initial[i] for i in exact_idx), tuple(Counter(initial[i] for i in cells).get(v, 0)
+                                                         for v in range(n_values)))
+    pos = {i: k for k, i in enumerate(exact_idx)}
+    ops = [(tuple((pos[i], v) for i, v in pre_e), need, tuple((pos[i], v) for i, v in w_e), delta, other)
+           for (pre_e, need, w_e, delta), other in groups.items()]
     seen = {start}
     stack = [start]
-    apply_fns, is_failure = model.apply_fns, model.is_failure
+    written: set = set()
+    fired = [False] * len(ops)
     while stack:
-        s = stack.pop()
-        if is_failure(s):
-            continue
-        for fn in apply_fns:
-            t = fn(s)
-            if t is not None and t not in seen:
+        ex, hist = stack.pop()
+        for k, (pre_e, need, w_e, delta, other) in enumerate(ops):
+            if any(ex[p] != v for p, v in pre_e) or any(hist[v] < c for v, c in need):
+                continue
+            if not fired[k]:
+                fired[k] = True
+                written |= other
+            if w_e:
+                e2 = list(ex)
+                for p, v in w_e:
+                    e2[p] = v
+                e2 = tuple(e2)
+            else:
+                e2 = ex
+            h2 = tuple(h + d for h, d in zip(hist, delta)) if any(delta) else hist
+            nxt = (e2, h2)
+            if nxt not in seen:
                 if len(seen) >= max_states:
                     return None
-                seen.add(t)
-                stack.append(t)
-    import numpy as np
-    table = np.frombuffer(b"".join(seen), dtype=np.uint8).reshape(len(seen), len(start))
-    return tuple(tuple(int(v) for v in np.unique(table[:, i])) for i in range(len(start))), len(seen)
+                seen.add(nxt)
+                stack.append(nxt)
+    return seen, written
 
 
 def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
-    """Reachable value sets, or BccError when more than `max_states` states are reachable."""
+    """The fixpoint domains (see the module docstring); BccError past `max_states` abstract states."""
     from ..errors import BccError
-    found = reachable(model, max_states)
-    if found is None:
-        raise BccError(f"{model.name}: more than {max_states:,} states are reachable; the grounded PDDL export "
-                       "enumerates them to keep only reachable values (raise the limit with --max-states)",
-                       model.path)
-    return Domains(found[0], "reachable", found[1])
+    from .symbolic import explore, symbolic_functions
+    fns = symbolic_functions(model)
+    n = len(model.initial)
+    cells = set(_cell_bytes(model))
+    position = {p[0] for p in model.position if p is not None}
+    exact_idx = tuple(i for i in range(n) if i not in cells and i not in position)
+    exact = set(exact_idx)
+    n_values = len(model.grid.value_names)
+    dom = [{v} for v in model.initial]
+    # Chaotic iteration: an action whose grounding is slow (destroy, place: they read the
+    # inventory) is re-grounded only when the cheap ones (moves, turns) add nothing more.
+    # Leaves grounded over older domains may lack cases (new values) or test less (a byte
+    # with one value then is not tested), so they can only delay or add values; the loop
+    # ends after a round that grounds every action over the current domains and adds
+    # nothing: a fixpoint of exact leaves, whose leaves task.py turns into operators.
+    n_actions = len(fns["apply"])
+    leaves, grounded_over, cost = [[]] * n_actions, [None] * n_actions, [0] * n_actions
+    rounds, full = 0, True
+    while True:
+        rounds += 1
+        frozen = tuple(tuple(sorted(d)) for d in dom)
+        slow = sorted(cost)[n_actions // 2] * 4 + 50  # in leaves, so the rounds are deterministic
+        for a, apply in enumerate(fns["apply"]):
+            if grounded_over[a] != frozen and (full or cost[a] <= slow):
+                leaves[a] = list(explore(_guarded(apply, fns["failure"]), frozen))
+                cost[a], grounded_over[a] = len(leaves[a]), frozen
+        groups = _abstract_ops(leaves, exact, cells, n_values)
+        found = _abstract_reach(model.initial, exact_idx, sorted(cells), n_values, groups, max_states)
+        if found is None:
+            raise BccError(f"{model.name}: more than {max_states:,} abstract states (inventory and counts of "
+                           "cell values) are reachable; the grounded PDDL export explores them to bound each "
+                           "variable's values (raise the limit with --max-states)", model.path)
+        seen, written = found
+        changed = False
+        for ex, _ in seen:
+            for i, v in zip(exact_idx, ex):
+                if v not in dom[i]:
+                    dom[i].add(v)
+                    changed = True
+        for i, v in written:
+            if v not in dom[i]:
+                dom[i].add(v)
+                changed = True
+        if not changed:
+            if all(g == frozen for g in grounded_over):
+                return Domains(frozen, "fixpoint", len(seen), rounds, leaves)
+            full = True
+        else:
+            full = False

@@ -47,10 +47,11 @@ class Task:
     use_costs: bool
     stats: dict = field(default_factory=dict)
 
-    def atom(self, fact) -> str:
+    def atom(self, fact, flat: bool = False) -> str:
+        """`(cell x1 y0 z3 lava)`, or with `flat` the 0-ary `(cell_x1_y0_z3_lava)`."""
         i, v = fact
         pred, args = self.predicates[i]
-        return "(" + " ".join((pred, *args, self.value_names[i][v])) + ")"
+        return "(" + ("_" if flat else " ").join((pred, *args, self.value_names[i][v])) + ")"
 
     def action_of(self, op_name: str) -> str | None:
         """The canonical bcc action of a PDDL operator name (None for the goal operators)."""
@@ -139,15 +140,12 @@ def build_task(model, max_states: int | None = None) -> Task:
     domains = domains_for(model, DEFAULT_MAX_STATES if max_states is None else max_states)
     dom = domains.values
     fns = symbolic_functions(model)
-    failure = fns["failure"]
     predicates, value_names = _naming(model, len(model.initial))
     ops, errors, unreachable = [], 0, 0
-    for a, apply in enumerate(fns["apply"]):
-        def guarded(s, apply=apply):
-            return None if failure is not None and failure(s) else apply(s)
+    for a, leaves in enumerate(domains.leaves):
         stem = re.sub(r"[^a-z0-9_]+", "_", model.action_names[a].lower())
         k = 0
-        for leaf in explore(guarded, dom):
+        for leaf in leaves:
             if leaf.result is None:
                 continue
             if not isinstance(leaf.result, dict):
@@ -156,7 +154,7 @@ def build_task(model, max_states: int | None = None) -> Task:
             pre = tuple(sorted((i, vs[0]) for i, vs in leaf.allowed.items()))
             old = dict(pre)
             if any(v not in dom[i] for i, v in leaf.result.items()):
-                unreachable += 1  # writes a value no reachable state has: never fires
+                unreachable += 1  # writes a value outside the fixpoint's domains: never fires
                 continue
             changes = sorted((i, v) for i, v in leaf.result.items() if v != old[i])
             ops.append(Operator(f"{stem}__{k}", a, model.action_costs[a], pre,
@@ -177,6 +175,6 @@ def build_task(model, max_states: int | None = None) -> Task:
                 init=tuple(enumerate(model.initial)), goal_terms=goal_terms, domains=domains,
                 action_names=tuple(model.action_names), use_costs=use_costs,
                 stats={"operators": len(ops), "facts": n_facts, "goal_terms": len(goal_terms),
-                       "domains": domains.source, "reachable_states": domains.states,
+                       "domains": domains.source, "abstract_states": domains.states, "rounds": domains.rounds,
                        "error_leaves": errors, "unreachable_leaves": unreachable})
 

@@ -24,7 +24,14 @@ def _conj(atoms: list, indent: str) -> str:
     return "(and " + (" ".join(atoms) if len(atoms) <= 4 else ("\n" + indent + ("\n" + indent).join(atoms))) + ")"
 
 
-def domain_text(task: Task) -> str:
+def domain_text(task: Task, only: set | None = None, flat: bool = False) -> str:
+    """The domain text.
+
+    The variant for validators: `only` (operator names) keeps just those operators, since
+    a plan's validity depends only on the operators it names, the initial state and the
+    goal; `flat` writes each fact as a 0-ary predicate, `(cell_x1_y0_z3_lava)`, because
+    unified-planning enumerates every grounding of an untyped predicate over all
+    constants (`cell` has 4 arguments: tens of millions) before it simulates a plan."""
     consts = sorted({v for names in task.value_names.values() for v in names}
                     | {a for _, args in task.predicates.values() for a in args})
     preds = {}
@@ -32,16 +39,23 @@ def domain_text(task: Task) -> str:
         preds.setdefault(pred, len(args) + 1)
     req = ":strips" + (" :action-costs" if task.use_costs else "")
     lines = [_header(task, "PDDL domain"), f"(define (domain bcc-{task.name})", f"  (:requirements {req})"]
-    lines.append("  (:constants\n    " + "\n    ".join(" ".join(consts[i:i + 12]) for i in range(0, len(consts), 12)) + ")")
-    pred_lines = [f"({p} {' '.join(f'?a{k}' for k in range(n))})" for p, n in preds.items()]
+    if flat:
+        consts = []
+        pred_lines = [task.atom((i, v), True) for i, vs in enumerate(task.domains.values) for v in vs]
+    else:
+        pred_lines = [f"({p} {' '.join(f'?a{k}' for k in range(n))})" for p, n in preds.items()]
+    if consts:
+        lines.append("  (:constants\n    " + "\n    ".join(" ".join(consts[i:i + 12]) for i in range(0, len(consts), 12)) + ")")
     if len(task.goal_terms) != 1:
         pred_lines.append("(goal-reached)")
     lines.append("  (:predicates\n    " + "\n    ".join(pred_lines) + ")")
     if task.use_costs:
         lines.append("  (:functions (total-cost) - number)")
     for op in task.operators:
-        pre = [task.atom(f) for f in op.pre]
-        eff = [f"(not {task.atom(f)})" for f in op.delete] + [task.atom(f) for f in op.add]
+        if only is not None and op.name not in only:
+            continue
+        pre = [task.atom(f, flat) for f in op.pre]
+        eff = [f"(not {task.atom(f, flat)})" for f in op.delete] + [task.atom(f, flat) for f in op.add]
         if op.action < 0:
             eff.append("(goal-reached)")
         if task.use_costs:
@@ -52,12 +66,12 @@ def domain_text(task: Task) -> str:
     return "\n".join(lines) + "\n"
 
 
-def problem_text(task: Task) -> str:
-    init = [task.atom(f) for f in task.init]
+def problem_text(task: Task, flat: bool = False) -> str:
+    init = [task.atom(f, flat) for f in task.init]
     if task.use_costs:
         init.append("(= (total-cost) 0)")
     if len(task.goal_terms) == 1:
-        goal = _conj([task.atom(f) for f in task.goal_terms[0]], "      ")
+        goal = _conj([task.atom(f, flat) for f in task.goal_terms[0]], "      ")
     else:
         goal = "(and (goal-reached))"
     lines = [_header(task, "PDDL problem"), f"(define (problem bcc-{task.name}-problem)",
