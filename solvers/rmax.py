@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import random
 
+import numpy as np
+
 from ..model import Model
 from .base import Budget, Meter, Result
 from .model_learners import LEARNERS
@@ -58,31 +60,39 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
                     nxt.append(n)
             succ[s] = row
         frontier = nxt
-    value = {s: 0.0 for s in order}
-    terminal = {}
-
-    def q(s, k):
-        n = succ[s][k] if s in succ else None
-        if n is None:
-            return 0.0  # unknown: optimistic, R_max / (1 - gamma) with R_max = 0
-        if n not in terminal:
-            terminal[n] = "goal" if is_goal(n) else ("dead" if is_failure(n) else None)
-        kind = terminal[n]
-        if kind == "goal":
-            return -1.0
-        if kind == "dead":
-            return -1.0 + gamma * dead_value
-        return -1.0 + gamma * value.get(n, 0.0)
-
-    backwards = order[::-1]  # values flow back from where the imagined graph ends: fewer sweeps
-    for _ in range(10_000):
-        change = 0.0
-        for s in backwards:
-            best = max(q(s, k) for k in range(len(actions)))
-            change = max(change, abs(best - value[s]))
-            value[s] = best
+    # Value iteration, vectorised: per imagined state and action, the immediate value and
+    # (for a step that goes on) the index of the next state.
+    index = {s: i for i, s in enumerate(order)}
+    n_states, n_actions = len(order), len(actions)
+    now = np.zeros((n_states, n_actions))            # unknown: optimistic, R_max / (1 - gamma) = 0
+    after = np.full((n_states, n_actions), -1)
+    for i, s in enumerate(order):
+        for k, n in enumerate(succ.get(s, ())):
+            if n is None:
+                continue
+            if is_goal(n):
+                now[i, k] = -1.0
+            elif is_failure(n):
+                now[i, k] = -1.0 + gamma * dead_value
+            else:
+                now[i, k] = -1.0
+                after[i, k] = index.get(n, -1)   # beyond the imagined graph: optimistic 0
+    goes_on = after >= 0
+    target = np.where(goes_on, after, 0)
+    value = np.zeros(n_states)
+    for _ in range(100_000):
+        qs = now + gamma * np.where(goes_on, value[target], 0.0)
+        new = qs.max(axis=1)
+        change = float(np.abs(new - value).max()) if n_states else 0.0
+        value = new
         if change < delta:
             break
+    qs = now + gamma * np.where(goes_on, value[target], 0.0)
+
+    def q(s, k):
+        i = index.get(s)
+        return 0.0 if i is None or s not in succ else float(qs[i, k])
+
     q.covers = succ.__contains__
     q.next = lambda s, k: succ[s][k] if s in succ else None
     return q
