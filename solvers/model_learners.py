@@ -150,6 +150,11 @@ class ObjectOriented:
         return tuple(v for i, v in enumerate(f) if i not in self.index_features)
 
     @staticmethod
+    def _holds(constraints, f):
+        """A general term, kept as its (feature, allowed values) constraints only."""
+        return all(f[i] in allowed for i, allowed in constraints)
+
+    @staticmethod
     def _covers(term, f):
         return all(allowed is None or v in allowed for allowed, v in zip(term, f))
 
@@ -170,7 +175,8 @@ class ObjectOriented:
             else:
                 terms.append([frozenset((v,)) for v in f])
         self.terms[(a, eff)] = terms
-        self.general[(a, eff)] = [self._simplest(t, others) for t in terms]
+        self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others))
+                                        if allowed is not None) for t in terms]
 
     @staticmethod
     def _simplest(term, others):
@@ -204,7 +210,7 @@ class ObjectOriented:
         for other in by_effect:  # effects whose terms cover this example must be split
             if self._is_noop(other):
                 continue
-            if other == eff or any(self._covers(t, f) for t in self.general.get((a, other), ())):
+            if other == eff or any(self._holds(t, f) for t in self.general.get((a, other), ())):
                 self._learn_terms(a, other)
         self.predicted.clear()
         self.failure_index.clear()
@@ -214,7 +220,7 @@ class ObjectOriented:
         if key in self.predicted:
             return self.predicted[key]
         hits = [eff for eff in self.examples.get(a, ())
-                if not self._is_noop(eff) and any(self._covers(t, f) for t in self.general[(a, eff)])]
+                if not self._is_noop(eff) and any(self._holds(t, f) for t in self.general[(a, eff)])]
         out = None
         if len(hits) == 1:
             out = hits[0]

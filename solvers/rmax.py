@@ -30,7 +30,7 @@ from ..model import Model
 from .base import Budget, Meter, Result
 from .model_learners import LEARNERS
 
-MAX_IMAGINED = 50_000
+MAX_IMAGINED = 20_000
 
 
 
