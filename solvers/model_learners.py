@@ -70,7 +70,7 @@ class ObjectOriented:
         self.terms = {}          # (action, effect) -> [term: list of allowed value sets per feature]
         self.general = {}        # (action, effect) -> the same terms with the fewest constraints
         self.noops = set()       # (action, features but index attributes) where nothing happened
-        self.predicted = {}      # (action, features) -> effect or None, until knowledge changes
+        self.predicted = {}      # action -> {features: effect or None}, until that action's knowledge changes
         self.failure_index = {}  # (action, effect, term) -> failure examples projected on its features
         self.fallback = Tabular(model, m)
         self.wrong = set()       # (state, action) where a generalised prediction failed
@@ -212,13 +212,13 @@ class ObjectOriented:
                 continue
             if other == eff or any(self._holds(t, f) for t in self.general.get((a, other), ())):
                 self._learn_terms(a, other)
-        self.predicted.clear()
-        self.failure_index.clear()
+        self.predicted.pop(a, None)  # only this action's knowledge changed
+        self.failure_index = {k: v for k, v in self.failure_index.items() if k[0] != a}
 
     def _generalised(self, f, a):
-        key = (a, f)
-        if key in self.predicted:
-            return self.predicted[key]
+        known = self.predicted.setdefault(a, {})
+        if f in known:
+            return known[f]
         hits = [eff for eff in self.examples.get(a, ())
                 if not self._is_noop(eff) and any(self._holds(t, f) for t in self.general[(a, eff)])]
         out = None
@@ -226,7 +226,7 @@ class ObjectOriented:
             out = hits[0]
         elif not hits and ((a, self._pointed(f)) in self.noops or self._all_fail(f, a)):
             out = self.NOTHING
-        self.predicted[key] = out
+        known[f] = out
         return out
 
     def _all_fail(self, f, a):
