@@ -200,13 +200,8 @@ def _read_plan_arg(plan: str):
     from .simulate import read_plan
     if plan == "-":
         return read_plan(sys.stdin.read(), "<stdin>"), "<stdin>"
-    try:
-        with open(plan, encoding="utf-8") as f:
-            return read_plan(f.read(), plan), plan
-    except FileNotFoundError:
-        raise BccError("no such plan file", plan) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise BccError(f"cannot read plan: {exc}", plan) from None
+    from .errors import read_input
+    return read_plan(read_input(plan, "plan"), plan), plan
 
 
 @main.command("validate")

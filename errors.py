@@ -5,6 +5,8 @@ The loader, the parser and the compiler raise `BccError`; the CLI prints it once
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 
 class BccError(Exception):
     """Bad input (a dungeon, a domain, a plan, an expression), with its position when known."""
@@ -34,3 +36,14 @@ class ModelError(Exception):
     """A domain bug found while running a compiled model (e.g. a value outside its range).
 
     Raised from generated code; the CLI reports it like bad input (exit 2)."""
+
+
+def read_input(path: str | Path, what: str | None = None) -> str:
+    """The text of a file the user named (a dungeon, a plan, a demonstration...), or a
+    one-line BccError saying why it cannot be read: `what` names the kind of file."""
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise BccError(f"no such {what + ' ' if what else ''}file", str(path)) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise BccError(f"cannot read {what or 'file'}: {exc}", str(path)) from None

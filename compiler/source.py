@@ -14,7 +14,7 @@ from pathlib import Path
 
 import yaml
 
-from ..errors import BccError
+from ..errors import BccError, read_input
 
 
 class YMap(dict):
@@ -88,14 +88,7 @@ class Origin:
 
 def load_yaml(path: str | Path) -> YMap:
     """Parse one YAML document into YMap/YList with positions; bad YAML is a BccError."""
-    path = str(path)
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise BccError("no such file", path) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise BccError(f"cannot read file: {exc}", path) from None
-    return load_yaml_text(text, path)
+    return load_yaml_text(read_input(path), str(path))
 
 
 def load_yaml_text(text: str, path: str) -> YMap:

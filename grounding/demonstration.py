@@ -13,7 +13,7 @@ import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..errors import BccError
+from ..errors import BccError, read_input
 from ..model import Model
 
 FORMAT = "bcc-demonstration/1"
@@ -108,12 +108,7 @@ class Demonstration:
     def load(cls, path: str | Path, model: Model | None = None) -> Demonstration:
         """Read a demonstration file; compiles its dungeon unless `model` is given."""
         path = str(path)
-        try:
-            text = Path(path).read_text(encoding="utf-8")
-        except FileNotFoundError:
-            raise BccError("no such demonstration file", path) from None
-        except (OSError, UnicodeDecodeError) as exc:
-            raise BccError(f"cannot read demonstration: {exc}", path) from None
+        text = read_input(path, "demonstration")
         try:
             data = json.loads(text)
         except json.JSONDecodeError as exc:

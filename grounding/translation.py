@@ -23,7 +23,7 @@ import re
 from collections import defaultdict
 from pathlib import Path
 
-from ..errors import BccError
+from ..errors import BccError, read_input
 
 NULL = "<null>"
 FORMAT = "bcc-ibm2/1"
@@ -156,12 +156,9 @@ class IBMModel2:
 
     @classmethod
     def load(cls, path: str | Path) -> IBMModel2:
+        text = read_input(path, "model")
         try:
-            data = json.loads(Path(path).read_text(encoding="utf-8"))
-        except FileNotFoundError:
-            raise BccError("no such model file", str(path)) from None
+            data = json.loads(text)
         except json.JSONDecodeError as exc:
             raise BccError(f"invalid JSON: {exc.msg}", str(path), exc.lineno, exc.colno) from None
-        except (OSError, UnicodeDecodeError) as exc:
-            raise BccError(f"cannot read model: {exc}", str(path)) from None
         return cls.from_json(data, str(path))
