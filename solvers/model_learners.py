@@ -33,23 +33,21 @@ class ObjectOriented:
     """DOORMax-style learner. An action's *effect* -- the agent's attributes set to new
     values, its position moved by a delta, cells changed relative to it -- is learned as a
     function of *conditions* over local features: the agent's attributes other than its
-    position, and the cells next to it (within `radius` in the plane, three layers).
-    Nothing is keyed by absolute position, so what is learned in one cell holds in every
-    cell with the same surroundings, and (with the same domain) in other dungeons.
+    position, what an index attribute points to (the item held, not the slot number), and
+    the cells next to it (within `radius` in the plane, three layers). Nothing is keyed by
+    absolute position, so what is learned in one cell holds in every cell with the same
+    surroundings, and (with the same domain) in other dungeons.
 
-    Each effect's condition is a disjunction of terms; a term allows, per feature, the
-    values seen with it (an attribute seen with two values stops mattering). A new example
-    of an effect widens the first term that can take it without covering any example of
-    another effect (DOORMax's failure conditions), else starts a term of its own; an
-    example that a term of another effect covered splits that effect's terms again.
-    A state is predicted when exactly one effect covers it (or it was seen exactly);
-    otherwise it is unknown, hence optimistic. A feature seen with two values stops
-    mattering to a term, except that "nothing happened" (a disjunction of many reasons)
-    keeps the values it was seen with: a block never met next to the agent, or an item
-    never held, is worth trying.
+    Each effect's condition is a disjunction of terms: its examples are covered greedily
+    by terms that drop a feature seen with two values, as long as they cover no example
+    of another effect; each term is then cut to the fewest constraints that still rule
+    those out (the most general condition the data allow). A state is predicted by the
+    one effect whose condition holds, or by what was seen in exactly these features.
+    "Nothing happened" has many reasons and is not generalised: it is predicted where it
+    was seen (up to which slot is selected), or where DOORMax's failure conditions rule out
+    every effect the action is known to have. Anything else is unknown, hence optimistic;
+    a wrong prediction falls back to what was seen in that very state.
     """
-
-    ANY = None
 
     def __init__(self, model: Model, m: int = 1, radius: int = 1):
         self.model, self.m = model, m
@@ -58,7 +56,6 @@ class ObjectOriented:
         pos_idx = {i for i in self.pos if i is not None}
         self.attrs = [v.index for v in model.variables if v.index not in pos_idx]
         self.pointers = self._pointers(model, pos_idx)
-        self.n_attrs = len(self.attrs) + len(self.pointers)
         self.index_features = {self.attrs.index(v) for v, _ in self.pointers}
         self.offsets = [(dx, dy, dz) for dy in (-1, 0, 1) for dz in range(-radius, radius + 1)
                         for dx in range(-radius, radius + 1) if abs(dx) + abs(dz) <= radius]
@@ -71,7 +68,7 @@ class ObjectOriented:
         self.general = {}        # (action, effect) -> the same terms with the fewest constraints
         self.noops = set()       # (action, features but index attributes) where nothing happened
         self.predicted = {}      # action -> {features: effect or None}, until that action's knowledge changes
-        self.failure_index = {}  # (action, effect, term) -> failure examples projected on its features
+        self.failure_index = {}  # action -> {(effect, term): failure examples projected on its features}
         self.fallback = Tabular(model, m)
         self.wrong = set()       # (state, action) where a generalised prediction failed
 
@@ -213,7 +210,7 @@ class ObjectOriented:
             if other == eff or any(self._holds(t, f) for t in self.general.get((a, other), ())):
                 self._learn_terms(a, other)
         self.predicted.pop(a, None)  # only this action's knowledge changed
-        self.failure_index = {k: v for k, v in self.failure_index.items() if k[0] != a}
+        self.failure_index.pop(a, None)
 
     def _generalised(self, f, a):
         known = self.predicted.setdefault(a, {})
@@ -247,13 +244,13 @@ class ObjectOriented:
     def _failures(self, a, eff, k, t):
         """The features term k of `eff` constrains, and the other effects' examples
         projected onto them (built once per change of knowledge)."""
-        key = (a, eff, k)
-        hit = self.failure_index.get(key)
+        index = self.failure_index.setdefault(a, {})
+        hit = index.get((eff, k))
         if hit is None:
             fixed = tuple(i for i, allowed in enumerate(t) if allowed is not None)
             seen = {tuple(g[i] for i in fixed)
                     for e, gs in self.examples[a].items() if e != eff for g in gs}
-            hit = self.failure_index[key] = (fixed, seen)
+            hit = index[(eff, k)] = (fixed, seen)
         return hit
 
     def predict(self, s, a):

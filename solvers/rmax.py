@@ -33,8 +33,6 @@ from .model_learners import LEARNERS
 MAX_IMAGINED = 20_000
 
 
-
-
 def _world(model: Model, s: bytes, a: int) -> bytes:
     """The world: RL semantics of spec section 3 (an inapplicable action is a no-op)."""
     n = model.apply(a, s)
@@ -44,25 +42,29 @@ def _world(model: Model, s: bytes, a: int) -> bytes:
 def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value):
     """Value iteration over the states the learned model imagines from `start`; the given
     terminal function says which imagined states end the episode."""
-    states, frontier, succ = {start}, [start], {}
-    order = [start]
     is_goal, is_failure = model.is_goal, model.is_failure
-    while frontier and len(states) < MAX_IMAGINED:
+    kinds = {}  # imagined state -> "goal", "dead" or None, each computed once
+
+    def kind(n):
+        k = kinds.get(n, False)
+        if k is False:
+            k = kinds[n] = "goal" if is_goal(n) else ("dead" if is_failure(n) else None)
+        return k
+
+    index, order, frontier, succ = {start: 0}, [start], [start], {}
+    while frontier and len(order) < MAX_IMAGINED:
         nxt = []
         for s in frontier:
-            row = []
-            for a in actions:
-                n = learner.predict(s, a)
-                row.append(n)
-                if n is not None and n not in states and not is_goal(n) and not is_failure(n):
-                    states.add(n)
+            row = [learner.predict(s, a) for a in actions]
+            for n in row:
+                if n is not None and n not in index and kind(n) is None:
+                    index[n] = len(order)
                     order.append(n)
                     nxt.append(n)
             succ[s] = row
         frontier = nxt
     # Value iteration, vectorised: per imagined state and action, the immediate value and
     # (for a step that goes on) the index of the next state.
-    index = {s: i for i, s in enumerate(order)}
     n_states, n_actions = len(order), len(actions)
     now = np.zeros((n_states, n_actions))            # unknown: optimistic, R_max / (1 - gamma) = 0
     after = np.full((n_states, n_actions), -1)
@@ -70,12 +72,8 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
         for k, n in enumerate(succ.get(s, ())):
             if n is None:
                 continue
-            if is_goal(n):
-                now[i, k] = -1.0
-            elif is_failure(n):
-                now[i, k] = -1.0 + gamma * dead_value
-            else:
-                now[i, k] = -1.0
+            now[i, k] = -1.0 + (gamma * dead_value if kind(n) == "dead" else 0.0)
+            if kind(n) is None:
                 after[i, k] = index.get(n, -1)   # beyond the imagined graph: optimistic 0
     goes_on = after >= 0
     target = np.where(goes_on, after, 0)
