@@ -405,16 +405,13 @@ def _plot_curves(runs: dict, optimal, title: str, output: str | None) -> None:
 # Feature commands live beside their code (pddl_io/, grounding/, serve/, batch/, minecraft/);
 # each exposes `COMMANDS`, a list of click commands, and imports its heavy dependencies lazily.
 def _add_feature_commands() -> None:
-    import importlib
-    for module in ("pddl_io.commands", "grounding.commands", "serve.commands", "batch.commands",
-                   "minecraft.commands"):
-        try:
-            mod = importlib.import_module(f"{__package__}.{module}")
-        except ModuleNotFoundError as exc:
-            if exc.name != f"{__package__}.{module}":
-                raise
-            continue
-        for command in mod.COMMANDS:
+    from .batch import commands as batch_commands
+    from .grounding import commands as grounding_commands
+    from .minecraft import commands as minecraft_commands
+    from .pddl_io import commands as pddl_commands
+    from .serve import commands as serve_commands
+    for module in (pddl_commands, grounding_commands, serve_commands, batch_commands, minecraft_commands):
+        for command in module.COMMANDS:
             main.add_command(command)
 
 
