@@ -12,6 +12,10 @@ import re
 
 from ..model import Model
 
+# Compass names of a facing attribute's values (spec section 2): the direction ahead as
+# (dx, dz) in the world's x and z.
+COMPASS = {"south": (0, 1), "west": (-1, 0), "north": (0, -1), "east": (1, 0)}
+
 
 class Tabular:
     """(state, action) -> observed outcome, known after m visits."""
@@ -55,10 +59,13 @@ class ObjectOriented:
         self.pos = [p[0] if p is not None else None for p in model.position]
         pos_idx = {i for i in self.pos if i is not None}
         self.attrs = [v.index for v in model.variables if v.index not in pos_idx]
+        self.cyclic = {v.index: v.hi - v.lo + 1 for v in model.variables if v.type == "int"}
         self.pointers = self._pointers(model, pos_idx)
         self.index_features = {self.attrs.index(v) for v, _ in self.pointers}
-        self.offsets = [(dx, dy, dz) for dy in (-1, 0, 1) for dz in range(-radius, radius + 1)
-                        for dx in range(-radius, radius + 1) if abs(dx) + abs(dz) <= radius]
+        self.facing, self.ahead = self._frame(model)
+        # The cells around the agent in its own frame: (ahead, up, right).
+        self.offsets = [(da, dy, dr) for dy in (-1, 0, 1) for da in range(-radius, radius + 1)
+                        for dr in range(-radius, radius + 1) if abs(da) + abs(dr) <= radius]
         self.area = g.width * g.depth
         self.span = {v.index: v.hi - v.lo for v in model.variables}
         self.cache = {}          # state -> its feature tuple
@@ -71,6 +78,35 @@ class ObjectOriented:
         self.failure_index = {}  # action -> {(effect, term): failure examples projected on its features}
         self.fallback = Tabular(model, m)
         self.wrong = set()       # (state, action) where a generalised prediction failed
+
+    @staticmethod
+    def _frame(model):
+        """The agent's own frame, when the domain declares which attribute is its facing and
+        names that attribute's values by compass direction (spec section 2): the state index
+        of the facing and, per stored value, the (dx, dz) ahead. Without it the frame is the
+        world's (ahead = +x, right = +z), and what is learned facing one way is not reused
+        facing another."""
+        facing = (model.display or {}).get("facing")
+        if not facing or facing.get("index") is None:
+            return None, {}
+        ahead = {value - facing["lo"]: COMPASS.get(str(name)) for value, name in facing["names"].items()}
+        if not ahead or None in ahead.values():
+            return None, {}
+        return facing["index"], ahead
+
+    def _axes(self, s):
+        """(dx, dz) of the agent's ahead in state s."""
+        return (1, 0) if self.facing is None else self.ahead.get(s[self.facing], (1, 0))
+
+    @staticmethod
+    def _to_world(axes, da, dr):
+        fx, fz = axes
+        return da * fx - dr * fz, da * fz + dr * fx
+
+    @staticmethod
+    def _to_frame(axes, dx, dz):
+        fx, fz = axes
+        return dx * fx + dz * fz, dz * fx - dx * fz
 
     @staticmethod
     def _pointers(model, skip):
@@ -95,16 +131,24 @@ class ObjectOriented:
         f = self.cache.get(s)
         if f is None:
             x, y, z = self.model.agent_position(s)
-            cell = self.model.grid.cell
+            cell, axes, world = self.model.grid.cell, self._axes(s), self._to_world
+            around = []
+            for da, dy, dr in self.offsets:
+                dx, dz = world(axes, da, dr)
+                around.append(cell(s, x + dx, y + dy, z + dz))
             f = (tuple(s[i] for i in self.attrs) + tuple(s[members[s[i]]] for i, members in self.pointers)
-                 + tuple(cell(s, x + dx, y + dy, z + dz) for dx, dy, dz in self.offsets))
+                 + tuple(around))
             self.cache[s] = f
         return f
 
     def effect(self, s, n):
-        """What `n` changed in `s`: attributes set, position moved, cells changed (relative)."""
-        sets = tuple((i, n[i]) for i in self.attrs if s[i] != n[i])
-        moved = tuple((n[i] - s[i]) if i is not None else 0 for i in self.pos)
+        """What `n` changed in `s`, relative to the agent: integer attributes moved on by a
+        (cyclic) step, other attributes set, position moved and cells changed in its frame."""
+        sets = tuple((i, "add", (n[i] - s[i]) % self.cyclic[i]) if i in self.cyclic else (i, "set", n[i])
+                     for i in self.attrs if s[i] != n[i])
+        delta = [(n[i] - s[i]) if i is not None else 0 for i in self.pos]
+        axes = self._axes(s)
+        da, dr = self._to_frame(axes, delta[0], delta[2])
         x, y, z = self.model.agent_position(s)
         g = self.model.grid
         cells = []
@@ -112,16 +156,21 @@ class ObjectOriented:
             if s[i] != n[i]:
                 layer, rest = divmod(i - g.base, self.area)
                 cz, cx = divmod(rest, g.width)
-                cells.append((cx - x, g.layers[layer] - y, cz - z, n[i]))
-        return sets, moved, tuple(cells)
+                ca, cr = self._to_frame(axes, cx - x, cz - z)
+                cells.append((ca, g.layers[layer] - y, cr, n[i]))
+        return sets, (da, delta[1], dr), tuple(cells)
 
     def apply_effect(self, s, eff):
-        sets, moved, cells = eff
+        sets, (da, dy, dr), cells = eff
         n = bytearray(s)
-        for i, v in sets:
-            n[i] = v
-        for i, d in zip(self.pos, moved):
+        for i, op, v in sets:
+            n[i] = (s[i] + v) % self.cyclic[i] if op == "add" else v
+        axes = self._axes(s)
+        dx, dz = self._to_world(axes, da, dr)
+        for i, d in zip(self.pos, (dx, dy, dz)):
             if d:
+                if i is None:
+                    return None  # a static axis cannot move: the caller falls back
                 v = s[i] + d
                 if not 0 <= v <= self.span[i]:
                     return None  # off the map: not a state; the caller falls back
@@ -129,18 +178,19 @@ class ObjectOriented:
         if cells:
             g = self.model.grid
             x, y, z = self.model.agent_position(s)
-            for dx, dy, dz, v in cells:
-                cx, cy, cz = x + dx, y + dy, z + dz
+            for ca, cy, cr, v in cells:
+                cdx, cdz = self._to_world(axes, ca, cr)
+                cx, cy, cz = x + cdx, y + cy, z + cdz
                 if cy not in g.layers or not (0 <= cx < g.width and 0 <= cz < g.depth):
                     return None
                 n[g.base + g.layers.index(cy) * self.area + cz * g.width + cx] = v
         return bytes(n)
 
     # -- terms ---------------------------------------------------------------------------
-    NOTHING = ((), None, ())
+    NOTHING = ((), (0, 0, 0), ())
 
     def _is_noop(self, eff):
-        return not eff[0] and not any(eff[1]) and not eff[2]
+        return eff == self.NOTHING
 
     def _pointed(self, f):
         """The features with index attributes left out: what a no-op is remembered by."""
@@ -219,35 +269,48 @@ class ObjectOriented:
         hits = [eff for eff in self.examples.get(a, ())
                 if not self._is_noop(eff) and any(self._holds(t, f) for t in self.general[(a, eff)])]
         out = None
-        if len(hits) == 1:
+        if len(hits) > 1:
+            out = self._nearest(f, a, hits)
+        elif len(hits) == 1:
             out = hits[0]
         elif not hits and ((a, self._pointed(f)) in self.noops or self._all_fail(f, a)):
             out = self.NOTHING
         known[f] = out
         return out
 
+    def _nearest(self, f, a, effects):
+        """Two simplest conditions hold at once: at least one is too general. Keep the
+        effect whose own examples' common features (its specific terms) differ least from
+        `f` -- a nearest-neighbour vote between the candidates; a tie stays unknown."""
+        def distance(eff):
+            return min(sum(allowed is not None and v not in allowed for allowed, v in zip(t, f))
+                       for t in self.terms[(a, eff)])
+        scored = sorted((distance(e), k) for k, e in enumerate(effects))
+        return None if scored[0][0] == scored[1][0] else effects[scored[0][1]]
+
     def _all_fail(self, f, a):
-        """DOORMax's failure conditions: every effect `a` is known to have is sure to fail in
-        `f` -- for each of its terms, `a` once did something else in a state that agrees with
-        `f` on all the features the term constrains (the true condition is among them)."""
+        """DOORMax's failure conditions, over the simplest conditions: every effect `a` is
+        known to have is ruled out in `f`, because `a` once did something else in a state
+        that agrees with `f` on every feature the effect's condition constrains. A value
+        never seen there leaves the effect possible (unknown, hence worth trying)."""
         by_effect = self.examples.get(a, {})
         effects = [e for e in by_effect if not self._is_noop(e)]
         if not effects:
             return False  # never seen doing anything: nothing to rule out
         for eff in effects:
-            for k, t in enumerate(self.terms[(a, eff)]):
-                fixed, seen = self._failures(a, eff, k, t)
+            for k, term in enumerate(self.general[(a, eff)]):
+                fixed, seen = self._failures(a, eff, k, term)
                 if tuple(f[i] for i in fixed) not in seen:
                     return False
         return True
 
-    def _failures(self, a, eff, k, t):
+    def _failures(self, a, eff, k, term):
         """The features term k of `eff` constrains, and the other effects' examples
         projected onto them (built once per change of knowledge)."""
         index = self.failure_index.setdefault(a, {})
         hit = index.get((eff, k))
         if hit is None:
-            fixed = tuple(i for i, allowed in enumerate(t) if allowed is not None)
+            fixed = tuple(i for i, _ in term)
             seen = {tuple(g[i] for i in fixed)
                     for e, gs in self.examples[a].items() if e != eff for g in gs}
             hit = index[(eff, k)] = (fixed, seen)
@@ -262,7 +325,7 @@ class ObjectOriented:
             eff = self._generalised(f, a)
         if eff is None:
             return self.fallback.predict(s, a)
-        if eff is self.NOTHING:
+        if self._is_noop(eff):
             return s
         return self.apply_effect(s, eff) or self.fallback.predict(s, a)
 
