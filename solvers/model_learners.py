@@ -63,6 +63,11 @@ class ObjectOriented:
         self.pointers = self._pointers(model, pos_idx)
         self.index_features = {self.attrs.index(v) for v, _ in self.pointers}
         self.facing, self.ahead = self._frame(model)
+        agent = next((model.variables[i].label.split(".")[0] for i in self.pos if i is not None), None)
+        self.noop_features = [k for k, i in enumerate(self.attrs)
+                              if model.variables[i].label.split(".")[0] == agent
+                              and i != self.facing and k not in self.index_features]
+        self.noop_features += range(len(self.attrs), len(self.attrs) + len(self.pointers))
         # The cells around the agent in its own frame: (ahead, up, right).
         self.offsets = [(da, dy, dr) for dy in (-1, 0, 1) for da in range(-radius, radius + 1)
                         for dr in range(-radius, radius + 1) if abs(da) + abs(dr) <= radius]
@@ -73,11 +78,15 @@ class ObjectOriented:
         self.examples = {}       # action -> {effect: [feature tuples]}
         self.terms = {}          # (action, effect) -> [term: list of allowed value sets per feature]
         self.general = {}        # (action, effect) -> the same terms with the fewest constraints
-        self.noops = set()       # (action, features but index attributes) where nothing happened
+        self.noops = set()       # (action, what a no-op is remembered by: see _noop_key) where nothing happened
+        self.noop_examples = []  # (action, features) of every no-op seen
+        self.reach = set()       # features of the cells any action has changed or moved into
         self.predicted = {}      # action -> {features: effect or None}, until that action's knowledge changes
         self.failure_index = {}  # action -> {(effect, term): failure examples projected on its features}
         self.fallback = Tabular(model, m)
         self.wrong = set()       # (state, action) where a generalised prediction failed
+        self.answers = {}        # action -> {state: predicted next state}, until that action's knowledge changes
+        self.seen = {}           # (action, effect) -> [(feature of its locus, values seen in its examples)]
 
     @staticmethod
     def _frame(model):
@@ -192,9 +201,20 @@ class ObjectOriented:
     def _is_noop(self, eff):
         return eff == self.NOTHING
 
-    def _pointed(self, f):
-        """The features with index attributes left out: what a no-op is remembered by."""
-        return tuple(v for i, v in enumerate(f) if i not in self.index_features)
+    def _noop_key(self, f):
+        """What a no-op is remembered by: the agent's own attributes but its facing (it
+        sees in its own frame) and index ones (the item held counts, not the slot), what
+        its index attributes point to, and the cells where actions have been seen to act
+        (for a Minecraft agent, the column ahead of it). Where an action once did nothing,
+        it is expected to do nothing again wherever all of these are the same."""
+        return tuple(f[i] for i in self.noop_features) + tuple(f[i] for i in sorted(self.reach))
+
+    def _remember_noops(self):
+        """(Re)build the no-op keys; a key under which the action also did something is
+        not a reason, and is left out."""
+        self.noops = {(a, self._noop_key(f)) for a, f in self.noop_examples}
+        self.noops -= {(a, self._noop_key(f)) for a, by_effect in self.examples.items()
+                       for eff, fs in by_effect.items() if not self._is_noop(eff) for f in fs}
 
     @staticmethod
     def _holds(constraints, f):
@@ -207,7 +227,7 @@ class ObjectOriented:
 
     def _learn_terms(self, a, eff):
         """Greedy cover of the effect's examples by terms that cover no example of another
-        effect: a feature that differs between two examples is dropped from their term."""
+        effect: a term allows, per feature, the values its examples had."""
         mine = self.examples[a][eff]
         others = [f for e, fs in self.examples[a].items() if e != eff for f in fs]
         terms = []
@@ -215,18 +235,31 @@ class ObjectOriented:
             for k, t in enumerate(terms):
                 if self._covers(t, f):
                     break
-                wider = [allowed if allowed is None or v in allowed else None for allowed, v in zip(t, f)]
+                wider = [None if allowed is None else allowed | {v} for allowed, v in zip(t, f)]
                 if not any(self._covers(wider, g) for g in others):
                     terms[k] = wider
                     break
             else:
                 terms.append([frozenset((v,)) for v in f])
         self.terms[(a, eff)] = terms
-        self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others))
+        locus = self._locus(eff)
+        self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others, locus))
                                         if allowed is not None) for t in terms]
+        self.seen[(a, eff)] = [(i, {f[i] for f in mine}) for i in sorted(locus)]
+
+    def _locus(self, eff):
+        """The features an effect acts on: the attributes it changes, and the cells in the
+        columns it changes or moves into. Its condition is trusted only where these look as
+        they did in its examples (a block placed on a floor is not expected to fill lava),
+        and they are preferred when two constraints explain the data equally well."""
+        sets, (da, _, dr), cells = eff
+        columns = {(ca, cr) for ca, _, cr, _ in cells} | ({(da, dr)} if (da, dr) != (0, 0) else set())
+        first = len(self.attrs) + len(self.pointers)
+        return ({self.attrs.index(i) for i, _, _ in sets}
+                | {first + k for k, (oa, _, orr) in enumerate(self.offsets) if (oa, orr) in columns})
 
     @staticmethod
-    def _simplest(term, others):
+    def _simplest(term, others, locus=frozenset()):
         """The fewest of a term's constraints that still rule out every example of the
         other effects (greedy set cover): the most general condition the data allow, so
         that one turn seen facing north is expected wherever the agent faces north. It
@@ -234,7 +267,7 @@ class ObjectOriented:
         constraints = [(i, allowed) for i, allowed in enumerate(term) if allowed is not None]
         keep, left = {}, others
         while left and constraints:
-            i, allowed = max(constraints, key=lambda c: sum(g[c[0]] not in c[1] for g in left))
+            i, allowed = max(constraints, key=lambda c: (sum(g[c[0]] not in c[1] for g in left), c[0] in locus))
             rest = [g for g in left if g[i] in allowed]
             if len(rest) == len(left):
                 break  # the features cannot tell these apart
@@ -246,14 +279,22 @@ class ObjectOriented:
         if guess is not None and guess != n:  # the features missed something here: remember it exactly
             self.wrong.add((s, a))
         self.fallback.observe(s, a, n)
+        self.answers.get(a, {}).pop(s, None)
         f, eff = self.features(s), self.effect(s, n)
         if self.exact.get((a, f)) == eff:
             return
         self.exact[(a, f)] = eff
-        if self._is_noop(eff):
-            self.noops.add((a, self._pointed(f)))
         by_effect = self.examples.setdefault(a, {})
         by_effect.setdefault(eff, []).append(f)
+        if self._is_noop(eff):
+            self.noop_examples.append((a, f))
+            self.noops.add((a, self._noop_key(f)))
+        elif not self._locus(eff) - set(range(len(self.attrs))) <= self.reach:
+            self.reach |= self._locus(eff) - set(range(len(self.attrs)))
+            self.predicted.clear()  # no-ops of every action are remembered by more now
+            self.answers.clear()
+        if not self._is_noop(eff):
+            self._remember_noops()
         for other in by_effect:  # effects whose terms cover this example must be split
             if self._is_noop(other):
                 continue
@@ -261,6 +302,7 @@ class ObjectOriented:
                 self._learn_terms(a, other)
         self.predicted.pop(a, None)  # only this action's knowledge changed
         self.failure_index.pop(a, None)
+        self.answers.pop(a, None)
 
     def _generalised(self, f, a):
         known = self.predicted.setdefault(a, {})
@@ -268,15 +310,19 @@ class ObjectOriented:
             return known[f]
         hits = [eff for eff in self.examples.get(a, ())
                 if not self._is_noop(eff) and any(self._holds(t, f) for t in self.general[(a, eff)])]
+        trusted = [eff for eff in hits if self._familiar(f, a, eff)]
         out = None
-        if len(hits) > 1:
-            out = self._nearest(f, a, hits)
-        elif len(hits) == 1:
-            out = hits[0]
-        elif not hits and ((a, self._pointed(f)) in self.noops or self._all_fail(f, a)):
+        if len(trusted) > 1:
+            out = self._nearest(f, a, trusted)
+        elif trusted:
+            out = trusted[0]
+        elif not hits and ((a, self._noop_key(f)) in self.noops or self._all_fail(f, a)):
             out = self.NOTHING
         known[f] = out
         return out
+
+    def _familiar(self, f, a, eff):
+        return all(f[i] in values for i, values in self.seen[(a, eff)])
 
     def _nearest(self, f, a, effects):
         """Two simplest conditions hold at once: at least one is too general. Keep the
@@ -317,6 +363,15 @@ class ObjectOriented:
         return hit
 
     def predict(self, s, a):
+        answers = self.answers.get(a)
+        if answers is None:
+            answers = self.answers[a] = {}
+        n = answers.get(s, False)
+        if n is False:
+            n = answers[s] = self._predict(s, a)
+        return n
+
+    def _predict(self, s, a):
         if (s, a) in self.wrong:
             return self.fallback.predict(s, a)
         f = self.features(s)

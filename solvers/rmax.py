@@ -39,11 +39,19 @@ def _world(model: Model, s: bytes, a: int) -> bytes:
     return s if n is None else n
 
 
-def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value):
+def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value, kinds):
     """Value iteration over the states the learned model imagines from `start`; the given
-    terminal function says which imagined states end the episode."""
+    terminal function says which imagined states end the episode (`kinds` remembers it
+    across plans: state -> "goal", "dead" or None).
+
+    The imagined states are visited breadth first, and only as deep as the nearest
+    *target* -- a goal, or a state with an action the model cannot predict (worth R_max).
+    With -1 a step and a deterministic learned model, a state farther away than the
+    nearest target cannot be on a better path, so value iteration over this ball chooses
+    what it would choose over everything the model can imagine, at a fraction of the
+    cost; states on the ball's edge are valued as dead ends. Without a target in reach the
+    whole imagined graph is kept (up to MAX_IMAGINED states; beyond that, optimistic)."""
     is_goal, is_failure = model.is_goal, model.is_failure
-    kinds = {}  # imagined state -> "goal", "dead" or None, each computed once
 
     def kind(n):
         k = kinds.get(n, False)
@@ -51,18 +59,23 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
             k = kinds[n] = "goal" if is_goal(n) else ("dead" if is_failure(n) else None)
         return k
 
-    index, order, frontier, succ = {start: 0}, [start], [start], {}
+    index, order, frontier, succ, edge = {start: 0}, [start], [start], {}, None
     while frontier and len(order) < MAX_IMAGINED:
-        nxt = []
+        nxt, found = [], False
         for s in frontier:
             row = [learner.predict(s, a) for a in actions]
             for n in row:
-                if n is not None and n not in index and kind(n) is None:
+                if n is None or kind(n) == "goal":
+                    found = True
+                elif n not in index and kind(n) is None:
                     index[n] = len(order)
                     order.append(n)
                     nxt.append(n)
             succ[s] = row
         frontier = nxt
+        if found:
+            edge = nxt  # known states beyond the nearest target
+            break
     # Value iteration, vectorised: per imagined state and action, the immediate value and
     # (for a step that goes on) the index of the next state.
     n_states, n_actions = len(order), len(actions)
@@ -75,9 +88,13 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
             now[i, k] = -1.0 + (gamma * dead_value if kind(n) == "dead" else 0.0)
             if kind(n) is None:
                 after[i, k] = index.get(n, -1)   # beyond the imagined graph: optimistic 0
+    for s in edge or ():
+        now[index[s], :] = dead_value
     goes_on = after >= 0
     target = np.where(goes_on, after, 0)
-    value = np.zeros(n_states)
+    # From below: a state's value is exact once the nearest target's value has reached it,
+    # so the sweeps needed are about the depth of the ball, not log(delta) / log(gamma).
+    value = np.full(n_states, dead_value)
     for _ in range(100_000):
         qs = now + gamma * np.where(goes_on, value[target], 0.0)
         new = qs.max(axis=1)
@@ -108,10 +125,11 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
     actions = list(range(len(model.action_names))) if all_actions or not model.search_actions \
         else list(model.search_actions)
     dead_value = -1.0 / (1.0 - gamma)
+    kinds = {}
     history, steps_total, last_plan, replanned = [], 0, [], False
     for episode in range(episodes):
         s, plan, ret, kind = model.initial, [], 0.0, None
-        q = _plan_values(model, know, s, actions, gamma, delta, dead_value)
+        q = _plan_values(model, know, s, actions, gamma, delta, dead_value, kinds)
         for _ in range(max_steps):
             values = [q(s, k) for k in range(len(actions))]
             best = max(values)
@@ -135,7 +153,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             if kind is not None:
                 break
             if planned != n or not q.covers(s):  # a surprise, or beyond what was planned: plan again
-                q = _plan_values(model, know, s, actions, gamma, delta, dead_value)
+                q = _plan_values(model, know, s, actions, gamma, delta, dead_value, kinds)
                 replanned = True
         history.append({"episode": episode + 1, "steps": len(plan), "return": ret, "success": kind == "goal"})
         last_plan = plan if kind == "goal" else []
