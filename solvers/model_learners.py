@@ -68,6 +68,7 @@ class ObjectOriented:
                               if model.variables[i].label.split(".")[0] == agent
                               and i != self.facing and k not in self.index_features]
         self.noop_features += range(len(self.attrs), len(self.attrs) + len(self.pointers))
+        self.own = frozenset(self.noop_features)  # the agent's own features and what it holds
         # The cells around the agent in its own frame: (ahead, up, right).
         self.offsets = [(da, dy, dr) for dy in (-1, 0, 1) for da in range(-radius, radius + 1)
                         for dr in range(-radius, radius + 1) if abs(da) + abs(dr) <= radius]
@@ -243,7 +244,8 @@ class ObjectOriented:
                 terms.append([frozenset((v,)) for v in f])
         self.terms[(a, eff)] = terms
         locus = self._locus(eff)
-        self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others, locus))
+        preferred = locus | self.own
+        self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others, preferred))
                                         if allowed is not None) for t in terms]
         self.seen[(a, eff)] = [(i, {f[i] for f in mine}) for i in sorted(locus)]
 
@@ -259,19 +261,22 @@ class ObjectOriented:
                 | {first + k for k, (oa, _, orr) in enumerate(self.offsets) if (oa, orr) in columns})
 
     @staticmethod
-    def _simplest(term, others, locus=frozenset()):
+    def _simplest(term, others, preferred=frozenset()):
         """The fewest of a term's constraints that still rule out every example of the
         other effects (greedy set cover): the most general condition the data allow, so
         that one turn seen facing north is expected wherever the agent faces north. It
-        may be too general; a wrong prediction adds the example that corrects it."""
+        may be too general; a wrong prediction adds the example that corrects it.
+        Constraints on the `preferred` features -- the agent itself, what it holds, what
+        the effect acts on -- are taken first: a coincidence elsewhere (lava behind the
+        agent the one time it placed a block) explains less than what is in front of it."""
         constraints = [(i, allowed) for i, allowed in enumerate(term) if allowed is not None]
         keep, left = {}, others
         while left and constraints:
-            i, allowed = max(constraints, key=lambda c: (sum(g[c[0]] not in c[1] for g in left), c[0] in locus))
-            rest = [g for g in left if g[i] in allowed]
-            if len(rest) == len(left):
+            score = {c: sum(g[c[0]] not in c[1] for g in left) for c in constraints}
+            i, allowed = max(constraints, key=lambda c: (score[c] > 0 and c[0] in preferred, score[c]))
+            if not score[(i, allowed)]:
                 break  # the features cannot tell these apart
-            keep[i], left = allowed, rest
+            keep[i], left = allowed, [g for g in left if g[i] in allowed]
         return [keep.get(i) for i in range(len(term))]
 
     def observe(self, s, a, n):
@@ -337,8 +342,10 @@ class ObjectOriented:
     def _all_fail(self, f, a):
         """DOORMax's failure conditions, over the simplest conditions: every effect `a` is
         known to have is ruled out in `f`, because `a` once did something else in a state
-        that agrees with `f` on every feature the effect's condition constrains. A value
-        never seen there leaves the effect possible (unknown, hence worth trying)."""
+        that agrees with `f` on every feature the effect's condition constrains and on
+        what the effect acts on. A combination never seen there leaves the effect possible
+        (unknown, hence worth trying): a simplest condition may be too general, and a
+        failure it wrongly predicted would never be tried again."""
         by_effect = self.examples.get(a, {})
         effects = [e for e in by_effect if not self._is_noop(e)]
         if not effects:
@@ -351,12 +358,12 @@ class ObjectOriented:
         return True
 
     def _failures(self, a, eff, k, term):
-        """The features term k of `eff` constrains, and the other effects' examples
-        projected onto them (built once per change of knowledge)."""
+        """The features term k of `eff` constrains or the effect acts on, and the other
+        effects' examples projected onto them (built once per change of knowledge)."""
         index = self.failure_index.setdefault(a, {})
         hit = index.get((eff, k))
         if hit is None:
-            fixed = tuple(i for i, _ in term)
+            fixed = tuple(sorted({i for i, _ in term} | self._locus(eff)))
             seen = {tuple(g[i] for i in fixed)
                     for e, gs in self.examples[a].items() if e != eff for g in gs}
             hit = index[(eff, k)] = (fixed, seen)
