@@ -208,6 +208,8 @@ class ObjectOriented:
         its index attributes point to, and the cells where actions have been seen to act
         (for a Minecraft agent, the column ahead of it). Where an action once did nothing,
         it is expected to do nothing again wherever all of these are the same."""
+        if not self.reach:  # no action seen acting on a cell yet: every cell may matter
+            return tuple(v for i, v in enumerate(f) if i not in self.index_features)
         return tuple(f[i] for i in self.noop_features) + tuple(f[i] for i in sorted(self.reach))
 
     def _remember_noops(self):

@@ -31,6 +31,64 @@ def test_rmax_converges_on_grid_to_the_optimal_plan(learner):
     assert [e["steps"] for e in result.episodes][-1] == cost
 
 
+def test_rmax_oo_converges_on_bridge_to_the_optimal_plan():
+    # Mine the stone, bridge the lava, walk to the gold: 13 steps, A*'s cost (hand-checked in
+    # test_solvers.py). One death in lava teaches the oo model lava everywhere.
+    cost = optimal("bridge")
+    result = get_solver("rmax")(compiled("bridge"), BUDGET, learner="oo", episodes=8, seed=0, optimal_cost=cost)
+    assert result.solved and result.cost == cost
+    assert replay(compiled("bridge"), [(a, 1, 1) for a in result.plan]).valid
+    # measured: 3-5 episodes spent learning over seeds 0-9 (bench/learn_curves.py)
+    assert result.converged_episode is not None and result.converged_episode <= 5
+
+
+def test_tabular_rmax_converges_on_bridge_after_many_deaths():
+    # Tabular knows nothing across states: every lava-side state (facing, look, item held)
+    # is its own unknown, and each death ends an episode -- hundreds of episodes, not 4.
+    cost = optimal("bridge")
+    result = get_solver("rmax")(compiled("bridge"), BUDGET, learner="tabular", episodes=600, seed=0,
+                                optimal_cost=cost)
+    assert result.solved and result.cost == cost
+    assert result.converged_episode is not None
+    assert sum(not e["success"] for e in result.episodes) > 100
+
+
+@pytest.mark.parametrize("episodes", [1, 2, 6])
+def test_planning_only_as_deep_as_the_nearest_target_keeps_the_values(monkeypatch, episodes):
+    # The ball stops at the nearest goal or unknown; with -1 a step and a deterministic
+    # model, the best value at the start must be that of the shortest path to a target,
+    # found here by a plain breadth-first search over the same learned model (taken from
+    # R-max after some episodes of bridge: early, unknowns are near; later the goal is).
+    from bcc.solvers import rmax
+    from bcc.solvers.model_learners import ObjectOriented
+    learners = []
+
+    class Kept(ObjectOriented):
+        def __init__(self, *args):
+            super().__init__(*args)
+            learners.append(self)
+    monkeypatch.setitem(rmax.LEARNERS, "oo", Kept)
+    model = compiled("bridge")
+    rmax.solve(model, BUDGET, learner="oo", episodes=episodes, seed=0)
+    know, actions, gamma = learners[0], list(model.search_actions), 0.99
+    q = rmax._plan_values(model, know, model.initial, actions, gamma, 0.001, -1 / (1 - gamma), {})
+    depth, frontier, seen_states = 0, [model.initial], {model.initial}
+    while True:
+        nexts = [know.predict(x, a) for x in frontier for a in actions]
+        if any(n is None for n in nexts):
+            expected = -(1 - gamma ** depth) / (1 - gamma)         # then an unknown action: R_max = 0
+            break
+        if any(model.is_goal(n) for n in nexts):
+            expected = -(1 - gamma ** (depth + 1)) / (1 - gamma)   # the step into the goal
+            break
+        frontier = [n for n in nexts if not model.is_terminal(n) and not (n in seen_states or seen_states.add(n))]
+        depth += 1
+    best = max(q(model.initial, k) for k in range(len(actions)))
+    assert best == pytest.approx(expected, abs=0.01)
+    if episodes == 6:
+        assert depth == optimal("bridge") - 1   # learned: the goal is the nearest target
+
+
 def test_oo_learner_generalises_across_cells_in_the_maze():
     # Tabular R-max must try every (state, action) near its path; the local model learns a
     # move once per surrounding and reuses it, so it explores far less in the first episode.
