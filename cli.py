@@ -385,7 +385,8 @@ def _plot_curves(runs: dict, optimal, title: str, output: str | None) -> None:
             continue
         x = range(1, len(mean) + 1)
         n = sum(1 for s in run["steps"] if s)
-        line, = ax.plot(x, mean, marker="o", markersize=3, label=f"{name} (mean of {n} seeds)" if n > 1 else name)
+        line, = ax.plot(x, mean, marker="o", markersize=3 if len(mean) <= 50 else 0,
+                        label=f"{name} (mean of {n} seeds)" if n > 1 else name)
         if n > 1:
             ax.fill_between(x, low, high, color=line.get_color(), alpha=0.2, linewidth=0)
     if optimal is not None:
@@ -393,6 +394,8 @@ def _plot_curves(runs: dict, optimal, title: str, output: str | None) -> None:
     ax.set_xlabel("episode")
     ax.set_ylabel("steps (band: min to max over seeds)")
     ax.set_yscale("log")
+    if max((len(mean_curve(run["steps"])[0]) for run in runs.values()), default=0) > 50:
+        ax.set_xscale("log")  # hundreds of episodes: the first few, where most is learned, stay visible
     ax.set_title(title)
     ax.legend(fontsize="small")
     buf = io.BytesIO()
