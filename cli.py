@@ -134,10 +134,16 @@ def progress_enabled():
 @click.option("--model", "learner", type=click.Choice(["tabular", "oo"]), default=None, help="rmax: the model learner.")
 @click.option("--episodes", type=click.IntRange(min=1), default=None, help="Learning solvers: number of episodes.")
 @click.option("--seed", type=int, default=None, help="Learning solvers: random seed.")
+@click.option("--gamma", type=float, default=None, help="Learning solvers: discount [default: 0.99].")
+@click.option("--delta", type=float, default=None, help="rmax: value iteration stops when no value changes more [default: 0.01].")
+@click.option("--known-after", "m", type=int, default=None, metavar="M",
+              help="rmax: visits before a (state, action) is known [default: 1, the world is deterministic].")
+@click.option("--max-steps", type=int, default=None,
+              help="Learning solvers: steps before an episode is cut [default: rmax 1000, qlearning 200].")
 @click.option("--fd-search", metavar="CONFIG", default=None, help="fd: Fast Downward search [default: astar(lmcut())].")
 @goal_option
 def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, learner,
-              episodes, seed, fd_search, goal):
+              episodes, seed, gamma, delta, m, max_steps, fd_search, goal):
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
     from .solvers import Budget, get_solver
     from .solvers.heuristics import HEURISTICS
@@ -159,12 +165,20 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
             raise BccError("--fd-search applies to the fd solver only")
         options["search"] = fd_search
     learning = solver in ("rmax", "qlearning")
-    if (learner or episodes or seed is not None) and not learning:
-        raise BccError("--model, --episodes and --seed apply to the learning solvers (rmax, qlearning)")
-    if learner:
-        if solver != "rmax":
-            raise BccError("--model applies to rmax only")
-        options["learner"] = learner
+    tuning = {"episodes": episodes, "seed": seed, "gamma": gamma, "max_steps": max_steps}
+    rmax_only = {"learner": learner, "delta": delta, "m": m}
+    flag = {"learner": "--model", "m": "--known-after", "max_steps": "--max-steps"}
+    for k, v in rmax_only.items():
+        if v is not None:
+            if solver != "rmax":
+                raise BccError(f"{flag.get(k, '--' + k)} applies to rmax only")
+            options[k] = v
+    given = [k for k, v in tuning.items() if v is not None]
+    if given and not learning:
+        raise BccError(f"{', '.join(flag.get(k, '--' + k) for k in given)}: for the learning solvers (rmax, qlearning) only")
+    for k in ("gamma", "max_steps"):
+        if tuning[k] is not None:
+            options[k] = tuning[k]
     if episodes:
         options["episodes"] = episodes
     if seed is not None:

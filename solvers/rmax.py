@@ -116,9 +116,12 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
 def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular", episodes: int = 10,
           seed: int = 0, gamma: float = 0.99, delta: float = 0.01, m: int = 1, max_steps: int = 1000,
           optimal_cost: int | None = None, all_actions: bool = False, **options) -> Result:
+    from ..errors import BccError
     if learner not in LEARNERS:
-        from ..errors import BccError
         raise BccError(f"unknown model learner {learner!r}; available: {', '.join(LEARNERS)}")
+    if not (0 < gamma < 1 and delta > 0 and m >= 1 and max_steps >= 1 and episodes >= 0):
+        raise BccError(f"rmax needs 0 < gamma < 1, delta > 0, m >= 1, max_steps >= 1 and episodes >= 0 "
+                       f"(got gamma {gamma}, delta {delta}, m {m}, max_steps {max_steps}, episodes {episodes})")
     meter = Meter(budget, progress)
     rng = random.Random(seed)
     know = LEARNERS[learner](model, m)

@@ -120,6 +120,30 @@ def test_cli_reports_episodes_and_convergence():
     assert bad.exit_code == 2
 
 
+def test_cli_tunes_rmax_and_rejects_what_does_not_apply():
+    def solve(*args):
+        return CliRunner().invoke(main, ["solve", "grid", *args])
+    tuned = solve("--solver", "rmax", "--model", "oo", "--episodes", "3", "--gamma", "0.95", "--delta", "0.001",
+                  "--known-after", "2", "--max-steps", "300", "--json")
+    assert tuned.exit_code == 0, tuned.output
+    data = json.loads(tuned.stdout)
+    assert data["solved"] and len(data["episodes"]) == 3
+    # m = 2: each (state, action) must be tried twice before it is known: more exploring
+    once = json.loads(solve("--solver", "rmax", "--episodes", "3", "--json").stdout)
+    twice = json.loads(solve("--solver", "rmax", "--episodes", "3", "--known-after", "2", "--json").stdout)
+    assert sum(e["steps"] for e in twice["episodes"]) > sum(e["steps"] for e in once["episodes"])
+    cut = json.loads(solve("--solver", "rmax", "--episodes", "2", "--max-steps", "3", "--json").stdout)
+    assert [e["steps"] for e in cut["episodes"]] == [3, 3]
+    for bad, says in [(["--solver", "rmax", "--gamma", "1"], "0 < gamma < 1"),
+                      (["--solver", "rmax", "--delta", "0"], "delta > 0"),
+                      (["--solver", "rmax", "--known-after", "0"], "m >= 1"),
+                      (["--solver", "qlearning", "--delta", "0.1"], "--delta applies to rmax only"),
+                      (["--solver", "astar", "--gamma", "0.9"], "--gamma: for the learning solvers"),
+                      (["--solver", "qlearning", "--max-steps", "0"], "max_steps >= 1")]:
+        result = solve(*bad)
+        assert result.exit_code == 2 and says in result.output and "Traceback" not in result.output, bad
+
+
 def _curve(*args):
     result = CliRunner().invoke(main, ["learn-curve", "grid", *args, "--json"], catch_exceptions=False)
     assert result.exit_code == 0, result.output
