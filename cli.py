@@ -145,7 +145,7 @@ def progress_enabled():
 def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, learner,
               episodes, seed, gamma, delta, m, max_steps, fd_search, goal):
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
-    from .solvers import Budget, get_solver
+    from .solvers import Budget, LEARNING, get_solver, optimal_cost
     from .solvers.heuristics import HEURISTICS
     model = compile_model(dungeon, goal)
     solve = get_solver(solver)
@@ -164,7 +164,7 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
         if solver != "fd":
             raise BccError("--fd-search applies to the fd solver only")
         options["search"] = fd_search
-    learning = solver in ("rmax", "qlearning")
+    learning = solver in LEARNING
     tuning = {"episodes": episodes, "seed": seed, "gamma": gamma, "max_steps": max_steps}
     rmax_only = {"learner": learner, "delta": delta, "m": m}
     flag = {"learner": "--model", "m": "--known-after", "max_steps": "--max-steps"}
@@ -184,8 +184,7 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     if seed is not None:
         options["seed"] = seed
     if learning:  # converged_episode compares with the optimal cost, found by A*
-        reference = get_solver("astar")(model, Budget(time_limit=60, max_memory_mb=Budget.default().max_memory_mb))
-        options["optimal_cost"] = reference.cost if reference.solved else None
+        options["optimal_cost"] = optimal_cost(model)
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)

@@ -87,7 +87,7 @@ def learning_curves(dungeon: str, *, goal: str | None = None, learners: list[str
     (a hard limit, a crash) has null steps and its `errors` entry says why. `progress(run,
     outcome)`, if given, is called as each run finishes."""
     from .batch import Limits, map_runs
-    from .solvers import Budget, get_solver
+    from .solvers import Budget, optimal_cost as astar_cost
     learners = learners_from(learners)
     seeds = list(seeds)
     if episodes < 1 or not seeds:
@@ -95,8 +95,7 @@ def learning_curves(dungeon: str, *, goal: str | None = None, learners: list[str
     model = _model(dungeon, goal)   # bad input fails here; the runs' children inherit it
     memory = Budget.default().max_memory_mb
     # the reference cost converged_episode compares with: A*, in this process
-    optimal = get_solver("astar")(model, Budget(time_limit=60, max_memory_mb=memory))
-    optimal_cost = optimal.cost if optimal.solved else None
+    optimal_cost = astar_cost(model, max_memory_mb=memory)
     per_run = memory / max(workers, os.cpu_count() or 1)
     runs = [CurveRun(dungeon, goal, name, seed, episodes, optimal_cost, per_run, time_limit)
             for name in learners for seed in seeds]

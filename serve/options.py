@@ -2,9 +2,7 @@
 from __future__ import annotations
 
 from ..errors import BccError
-from ..solvers import list_solvers
-
-LEARNING = ("rmax", "qlearning")
+from ..solvers import LEARNING, list_solvers
 
 
 def solver_options(req) -> dict:
@@ -26,10 +24,15 @@ def solver_options(req) -> dict:
         if req.solver not in ("astar", "wastar"):
             raise BccError("`weight` applies to astar and wastar only")
         options["weight"] = req.weight
-    if (req.episodes is not None or req.seed is not None) and req.solver not in LEARNING:
-        raise BccError("`episodes` and `seed` apply to the learning solvers (rmax, qlearning)")
-    if req.episodes is not None:
-        options["episodes"] = req.episodes
-    if req.seed is not None:
-        options["seed"] = req.seed
+    rmax_only = {"learner": req.model, "delta": req.delta, "m": req.known_after}
+    for (key, value), field in zip(rmax_only.items(), ("model", "delta", "known_after")):
+        if value is not None:
+            if req.solver != "rmax":
+                raise BccError(f"`{field}` applies to rmax only")
+            options[key] = value
+    tuning = {"episodes": req.episodes, "seed": req.seed, "gamma": req.gamma, "max_steps": req.max_steps}
+    given = [k for k, v in tuning.items() if v is not None]
+    if given and req.solver not in LEARNING:
+        raise BccError(f"{', '.join(f'`{k}`' for k in given)}: for the learning solvers (rmax, qlearning) only")
+    options.update((k, v) for k, v in tuning.items() if v is not None)
     return options

@@ -24,6 +24,11 @@ class SolveRequest(DungeonRequest):
     weight: float | None = Field(None, ge=1, description="astar/wastar: f = g + W h.")
     episodes: int | None = Field(None, ge=1, description="Learning solvers: number of episodes.")
     seed: int | None = Field(None, description="Learning solvers: random seed.")
+    model: Literal["tabular", "oo"] | None = Field(None, description="rmax: the model learner [default: tabular].")
+    gamma: float | None = Field(None, gt=0, lt=1, description="Learning solvers: discount [default: 0.99].")
+    delta: float | None = Field(None, gt=0, description="rmax: value iteration stops below this change [default: 0.01].")
+    known_after: int | None = Field(None, ge=1, description="rmax: visits before a (state, action) is known [default: 1].")
+    max_steps: int | None = Field(None, ge=1, description="Learning solvers: steps before an episode is cut.")
 
 
 MAX_ACTIONS = 20_000  # a frame is ~1 KB of JSON: bounds one answer to tens of MB

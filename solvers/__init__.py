@@ -22,7 +22,17 @@ BUILTIN = {
     "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline (--episodes, --seed)"),
 }
 
-__all__ = ["Budget", "Result", "get_solver", "list_solvers"]
+__all__ = ["Budget", "Result", "get_solver", "list_solvers", "optimal_cost", "LEARNING"]
+
+LEARNING = ("rmax", "qlearning")   # learn from episodes; report `converged_episode` against A*
+
+
+def optimal_cost(model, time_limit: float = 60, max_memory_mb: float | None = None) -> int | None:
+    """A*'s cost, the yardstick of a learning solver's `converged_episode` (None when A*
+    finds no plan within the limits)."""
+    memory = max_memory_mb if max_memory_mb is not None else Budget.default().max_memory_mb
+    reference = get_solver("astar")(model, Budget(time_limit=time_limit, max_memory_mb=memory))
+    return reference.cost if reference.solved else None
 
 
 def _plugins() -> dict:

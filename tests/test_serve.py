@@ -157,6 +157,23 @@ def test_solve_bridge_job(api):
     assert replayed.valid and replayed.reached_goal
 
 
+def test_rmax_job_learns_the_bridge_and_reports_convergence(api):
+    status, created = api.post("/solve", {"dungeon": "bridge", "solver": "rmax", "model": "oo", "episodes": 8,
+                                          "seed": 0, "gamma": 0.99, "delta": 0.01, "known_after": 1})
+    assert status == 202
+    result = api.wait_job(created["id"])["result"]
+    cli = json.loads(CliRunner().invoke(main, ["solve", "bridge", "--solver", "rmax", "--model", "oo", "--episodes", "8",
+                                               "--seed", "0", "--json"]).stdout)
+    assert result["solved"] and result["cost"] == bfs_cost("bridge")
+    assert result["converged_episode"] == cli["converged_episode"] is not None
+    assert [e["steps"] for e in result["episodes"]] == [e["steps"] for e in cli["episodes"]]
+    for bad in ({"solver": "astar", "model": "oo"}, {"solver": "qlearning", "delta": 0.1},
+                {"solver": "bfs", "gamma": 0.9}):
+        status, body = api.post("/solve", {"dungeon": "bridge", **bad})
+        assert status == 400 and "only" in body["error"], bad
+    assert api.post("/solve", {"dungeon": "bridge", "solver": "rmax", "model": "deep"})[0] == 422
+
+
 def test_solve_posted_text_that_extends_a_shipped_dungeon(api):
     text = "dungeon: green_room\nextends: four_rooms\ngoal: agentInRoom(agent, green)\n"
     status, created = api.post("/solve", {"dungeon": text, "solver": "bfs"})
