@@ -39,7 +39,7 @@ def _world(model: Model, s: bytes, a: int) -> bytes:
     return s if n is None else n
 
 
-def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value, kinds):
+def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value, kinds, toward_goal=None):
     """Value iteration over the states the learned model imagines from `start`; the given
     terminal function says which imagined states end the episode (`kinds` remembers it
     across plans: state -> "goal", "dead" or None).
@@ -50,7 +50,10 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
     nearest target cannot be on a better path, so value iteration over this ball chooses
     what it would choose over everything the model can imagine, at a fraction of the
     cost; states on the ball's edge are valued as dead ends. Without a target in reach the
-    whole imagined graph is kept (up to MAX_IMAGINED states; beyond that, optimistic)."""
+    whole imagined graph is kept, up to MAX_IMAGINED states. A graph larger than that
+    cannot be valued state by state: then `toward_goal(start)` may give a plan that follows
+    the shortest imagined path to the goal (unknowns beyond the cap are not explored);
+    without one, the states beyond the cap are optimistic."""
     is_goal, is_failure = model.is_goal, model.is_failure
 
     def kind(n):
@@ -76,6 +79,10 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
         if found:
             edge = nxt  # known states beyond the nearest target
             break
+    if frontier and edge is None and toward_goal is not None:
+        path = toward_goal(start)
+        if path:
+            return _follow(path)
     # Value iteration, vectorised: per imagined state and action, the immediate value and
     # (for a step that goes on) the index of the next state.
     n_states, n_actions = len(order), len(actions)
@@ -113,6 +120,61 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
     return q
 
 
+def _shortest_to_goal(model: Model, learner, start, actions, kinds, h, limit: int = 5 * MAX_IMAGINED):
+    """A* over the learned model, known transitions only, from `start` to a goal state:
+    [(state, action position, next state)] or None. `h` must not overestimate the steps
+    left in the learned model (see `_steps_left`)."""
+    import heapq
+    from itertools import count
+    tie = count()
+    g, parent, heap, closed = {start: 0}, {start: None}, [(h(start), 0, next(tie), start)], set()
+    while heap and len(closed) < limit:
+        _, gs, _, s = heapq.heappop(heap)
+        if s in closed:
+            continue
+        if kinds.get(s) == "goal" or (s not in kinds and model.is_goal(s)):
+            path = []
+            while parent[s] is not None:
+                prev, k = parent[s]
+                path.append((prev, k, s))
+                s = prev
+            return path[::-1]
+        closed.add(s)
+        for k, a in enumerate(actions):
+            n = learner.predict(s, a)
+            if n is None or n == s or n in closed:
+                continue
+            if n not in kinds:
+                kinds[n] = "goal" if model.is_goal(n) else ("dead" if model.is_failure(n) else None)
+            if kinds[n] == "dead" or gs + 1 >= g.get(n, gs + 2):
+                continue
+            g[n], parent[n] = gs + 1, (s, k)
+            heapq.heappush(heap, (gs + 1 + h(n), gs + 1, next(tie), n))
+    return None
+
+
+def _follow(path):
+    """A plan that takes the path's actions (value 0) and nothing else (-inf), covering
+    only the path's states: any surprise or step off it plans again."""
+    step = {s: (k, n) for s, k, n in path}
+
+    def q(s, k):
+        return 0.0 if step.get(s, (None,))[0] == k else -float("inf")
+
+    q.covers = step.__contains__
+    q.next = lambda s, k: step[s][1] if step.get(s, (None,))[0] == k else None
+    return q
+
+
+def _steps_left(distance, longest_move: int):
+    """Steps at least needed to the goal in the learned model: the Manhattan `distance` to
+    where the goal may hold (the task is given) over the longest move ever observed (the
+    learned model can only repeat observed moves); 0 before any move is seen."""
+    if longest_move <= 0:
+        return lambda s: 0
+    return lambda s: -(-distance(s) // longest_move)
+
+
 def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular", episodes: int = 10,
           seed: int = 0, gamma: float = 0.99, delta: float = 0.01, m: int = 1, max_steps: int = 1000,
           optimal_cost: int | None = None, all_actions: bool = False, **options) -> Result:
@@ -129,10 +191,19 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
         else list(model.search_actions)
     dead_value = -1.0 / (1.0 - gamma)
     kinds = {}
+    from .heuristics import manhattan
+    distance, where, longest = manhattan(model), model.agent_position, [0]
+
+    def toward_goal(start):
+        return _shortest_to_goal(model, know, start, actions, kinds, _steps_left(distance, longest[0]))
+
+    def plan_from(s):
+        return _plan_values(model, know, s, actions, gamma, delta, dead_value, kinds, toward_goal)
+
     history, steps_total, last_plan, replanned = [], 0, [], False
     for episode in range(episodes):
         s, plan, ret, kind = model.initial, [], 0.0, None
-        q = _plan_values(model, know, s, actions, gamma, delta, dead_value, kinds)
+        q = plan_from(s)
         for _ in range(max_steps):
             values = [q(s, k) for k in range(len(actions))]
             best = max(values)
@@ -140,6 +211,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             a, planned = actions[k], q.next(s, k)
             n = _world(model, s, a)
             know.observe(s, a, n)
+            longest[0] = max(longest[0], sum(abs(u - v) for u, v in zip(where(s), where(n))))
             plan.append(a)
             ret -= 1
             steps_total += 1
@@ -156,7 +228,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             if kind is not None:
                 break
             if planned != n or not q.covers(s):  # a surprise, or beyond what was planned: plan again
-                q = _plan_values(model, know, s, actions, gamma, delta, dead_value, kinds)
+                q = plan_from(s)
                 replanned = True
         history.append({"episode": episode + 1, "steps": len(plan), "return": ret, "success": kind == "goal"})
         last_plan = plan if kind == "goal" else []

@@ -89,6 +89,40 @@ def test_planning_only_as_deep_as_the_nearest_target_keeps_the_values(monkeypatc
         assert depth == optimal("bridge") - 1   # learned: the goal is the nearest target
 
 
+class _Oracle:
+    """A 'learned' model that happens to be exact: the real dynamics (RL semantics)."""
+    def __init__(self, model):
+        self.model = model
+
+    def predict(self, s, a):
+        n = self.model.apply(a, s)
+        return s if n is None else n
+
+
+def test_the_shortest_imagined_path_to_the_goal_is_optimal_in_that_model():
+    from bcc.solvers import rmax
+    from bcc.solvers.heuristics import manhattan
+    for name in ("easy_maze", "bridge"):
+        model = compiled(name)
+        path = rmax._shortest_to_goal(model, _Oracle(model), model.initial, list(model.search_actions), {},
+                                      rmax._steps_left(manhattan(model), 1))
+        assert len(path) == get_solver("bfs")(model, BUDGET).cost           # a second solver's cost
+        assert model.is_goal(path[-1][2]) and all(p[2] == q[0] for p, q in zip(path, path[1:]))
+    # a move of up to 2 cells halves the bound (rounded up): never more than the steps left
+    h = rmax._steps_left(lambda s: 5, 2)
+    assert h(b"") == 3 and rmax._steps_left(lambda s: 5, 0)(b"") == 0
+
+
+def test_rmax_oo_converges_on_the_tough_maze_where_the_imagined_graph_is_too_big():
+    # 43 steps and six stones to mine: more states within the goal's distance than value
+    # iteration may hold (MAX_IMAGINED); R-max then follows the shortest imagined path.
+    cost = optimal("tough_maze")
+    result = get_solver("rmax")(compiled("tough_maze"), Budget(time_limit=600), learner="oo", episodes=3, seed=0,
+                                optimal_cost=cost)
+    assert result.solved and result.cost == cost and result.converged_episode is not None
+    assert replay(compiled("tough_maze"), [(a, 1, 1) for a in result.plan]).valid
+
+
 def test_oo_learner_generalises_across_cells_in_the_maze():
     # Tabular R-max must try every (state, action) near its path; the local model learns a
     # move once per surrounding and reuses it, so it explores far less in the first episode.
