@@ -206,7 +206,7 @@ class ObjectOriented:
         """What a no-op is remembered by: the agent's own attributes but its facing (it
         sees in its own frame) and index ones (the item held counts, not the slot), what
         its index attributes point to, and the cells where actions have been seen to act
-        (for a Minecraft agent, the column ahead of it). Where an action once did nothing,
+        (typically the column ahead of it). Where an action once did nothing,
         it is expected to do nothing again wherever all of these are the same."""
         if not self.reach:  # no action seen acting on a cell yet: every cell may matter
             return tuple(v for i, v in enumerate(f) if i not in self.index_features)
@@ -254,7 +254,7 @@ class ObjectOriented:
     def _locus(self, eff):
         """The features an effect acts on: the attributes it changes, and the cells in the
         columns it changes or moves into. Its condition is trusted only where these look as
-        they did in its examples (a block placed on a floor is not expected to fill lava),
+        they did in its examples (a block placed on one kind of floor is not expected to fill another),
         and they are preferred when two constraints explain the data equally well."""
         sets, (da, _, dr), cells = eff
         columns = {(ca, cr) for ca, _, cr, _ in cells} | ({(da, dr)} if (da, dr) != (0, 0) else set())
@@ -269,7 +269,7 @@ class ObjectOriented:
         that one turn seen facing north is expected wherever the agent faces north. It
         may be too general; a wrong prediction adds the example that corrects it.
         Constraints on the `preferred` features -- the agent itself, what it holds, what
-        the effect acts on -- are taken first: a coincidence elsewhere (lava behind the
+        the effect acts on -- are taken first: a coincidence elsewhere (what lay behind the
         agent the one time it placed a block) explains less than what is in front of it."""
         constraints = [(i, allowed) for i, allowed in enumerate(term) if allowed is not None]
         keep, left = {}, others
