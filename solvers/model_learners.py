@@ -49,7 +49,8 @@ class ObjectOriented:
     one effect whose condition holds, or by what was seen in exactly these features.
     "Nothing happened" has many reasons and is not generalised: it is predicted where it
     was seen (up to which slot is selected), or where DOORMax's failure conditions rule out
-    every effect the action is known to have. Anything else is unknown, hence optimistic;
+    every effect the action is known to have (a failure seen in the same conditions, or a
+    value seen to block the action in a near miss). Anything else is unknown, hence optimistic;
     a wrong prediction falls back to what was seen in that very state.
     """
 
@@ -68,10 +69,16 @@ class ObjectOriented:
                               if model.variables[i].label.split(".")[0] == agent
                               and i != self.facing and k not in self.index_features]
         self.noop_features += range(len(self.attrs), len(self.attrs) + len(self.pointers))
-        self.own = frozenset(self.noop_features)  # the agent's own features and what it holds
         # The cells around the agent in its own frame: (ahead, up, right).
         self.offsets = [(da, dy, dr) for dy in (-1, 0, 1) for da in range(-radius, radius + 1)
                         for dr in range(-radius, radius + 1) if abs(da) + abs(dr) <= radius]
+        self.objects = self._objects(model)
+        self.plane = [(da, dr) for da, dy, dr in self.offsets if dy == 0]
+        # which object stands in each cell of the plane around the agent: part of what a
+        # no-op is remembered by (an action on an object happens only where it stands)
+        first_object = len(self.attrs) + len(self.pointers) + len(self.offsets)
+        self.noop_features += range(first_object, first_object + (len(self.plane) if self.objects else 0))
+        self.own = frozenset(self.noop_features)  # the agent, what it holds, who stands next to it
         self.area = g.width * g.depth
         self.span = {v.index: v.hi - v.lo for v in model.variables}
         self.cache = {}          # state -> its feature tuple
@@ -88,6 +95,21 @@ class ObjectOriented:
         self.wrong = set()       # (state, action) where a generalised prediction failed
         self.answers = {}        # action -> {state: predicted next state}, until that action's knowledge changes
         self.seen = {}           # (action, effect) -> [(feature of its locus, values seen in its examples)]
+
+    @staticmethod
+    def _objects(model):
+        """Other objects that stand in a cell (a domain's creatures, ...), each as a function of the
+        state giving its (x, z): read from the state where it moves, else where the
+        dungeon put it. Their cells are perceived like the grid's (`features`)."""
+        by_label = {v.label: v for v in model.variables}
+        out = []
+        for name, x, z in (model.display or {}).get("objects", ()):
+            vx, vz = by_label.get(f"{name}.x"), by_label.get(f"{name}.z")
+            if vx is not None and vz is not None:
+                out.append(lambda s, vx=vx, vz=vz: (s[vx.index] + vx.lo, s[vz.index] + vz.lo))
+            elif x is not None and z is not None:
+                out.append(lambda s, at=(x, z): at)
+        return out
 
     @staticmethod
     def _frame(model):
@@ -146,6 +168,11 @@ class ObjectOriented:
             for da, dy, dr in self.offsets:
                 dx, dz = world(axes, da, dr)
                 around.append(cell(s, x + dx, y + dy, z + dz))
+            if self.objects:
+                standing = {where(s): k + 1 for k, where in reversed(list(enumerate(self.objects)))}
+                for da, dr in self.plane:
+                    dx, dz = world(axes, da, dr)
+                    around.append(standing.get((x + dx, z + dz), 0))
             f = (tuple(s[i] for i in self.attrs) + tuple(s[members[s[i]]] for i, members in self.pointers)
                  + tuple(around))
             self.cache[s] = f
@@ -262,6 +289,16 @@ class ObjectOriented:
         return ({self.attrs.index(i) for i, _, _ in sets}
                 | {first + k for k, (oa, _, orr) in enumerate(self.offsets) if (oa, orr) in columns})
 
+    def _cells_acted_on(self, eff):
+        """The features of the very cells an effect changes or moves the agent into (for a
+        move, its whole column): narrower than the locus, whose whole columns are there to
+        guard an effect's own condition, not to tell which surroundings a failure shares."""
+        _, (da, _, dr), cells = eff
+        changed = {(ca, cy, cr) for ca, cy, cr, _ in cells}
+        first = len(self.attrs) + len(self.pointers)
+        return {first + k for k, (oa, oy, orr) in enumerate(self.offsets)
+                if (oa, oy, orr) in changed or (oa, orr) == (da, dr) != (0, 0)}
+
     @staticmethod
     def _simplest(term, others, preferred=frozenset()):
         """The fewest of a term's constraints that still rule out every example of the
@@ -323,7 +360,7 @@ class ObjectOriented:
             out = self._nearest(f, a, trusted)
         elif trusted:
             out = trusted[0]
-        elif not hits and ((a, self._noop_key(f)) in self.noops or self._all_fail(f, a)):
+        elif (not hits and (a, self._noop_key(f)) in self.noops) or self._all_fail(f, a):
             out = self.NOTHING
         known[f] = out
         return out
@@ -345,19 +382,68 @@ class ObjectOriented:
         """DOORMax's failure conditions, over the simplest conditions: every effect `a` is
         known to have is ruled out in `f`, because `a` once did something else in a state
         that agrees with `f` on every feature the effect's condition constrains and on
-        what the effect acts on. A combination never seen there leaves the effect possible
-        (unknown, hence worth trying): a simplest condition may be too general, and a
-        failure it wrongly predicted would never be tried again."""
+        what the effect acts on, or because a value of `f` that the condition does not
+        allow is a known blocker (`_blocks`). An effect whose condition holds but which is
+        not familiar here is ruled out only by a known blocker among its unfamiliar
+        values. A combination never seen there leaves the effect possible (unknown, hence
+        worth trying): a simplest condition may be too general, and a failure it wrongly
+        predicted would never be tried again."""
         by_effect = self.examples.get(a, {})
         effects = [e for e in by_effect if not self._is_noop(e)]
         if not effects:
             return False  # never seen doing anything: nothing to rule out
         for eff in effects:
             for k, term in enumerate(self.general[(a, eff)]):
+                if self._holds(term, f):  # it holds, yet is not trusted here (see _familiar)
+                    if not any(f[i] not in values and self._blocks(f, a, i) for i, values in self.seen[(a, eff)]):
+                        return False
+                    continue
                 fixed, seen = self._failures(a, eff, k, term)
-                if tuple(f[i] for i in fixed) not in seen:
+                if tuple(f[i] for i in fixed) in seen:
+                    continue
+                if not any(f[i] not in allowed and self._blocks(f, a, i) for i, allowed in term):
                     return False
         return True
+
+    def _blocks(self, f, a, i):
+        """Whether f's value of feature i is a known blocker of `a`: a near miss (Winston)
+        was seen -- `a` did something else in a state that met every constraint of one of
+        its effects' conditions but the one on i, where it had this value, and that agreed
+        with `f` on the cells that effect acts on. That value, not the rest of the
+        surroundings, is then what stopped the effect, and it stops `a`'s effects wherever
+        it is seen: looking the wrong way, or holding the wrong item, blocks a mining or
+        placing action before whatever is ahead. Cells acted on must agree (a block placed
+        on one kind of floor says nothing about filling another); the attributes an effect changes need
+        not (where the mined block goes in the inventory does not decide whether mining
+        happens)."""
+        for eff in self.examples.get(a, ()):
+            if self._is_noop(eff):
+                continue
+            for k, term in enumerate(self.general[(a, eff)]):
+                rest, table = self._near_misses(a, eff, k, term)
+                if (f[i],) + tuple(f[j] for j in rest) in table.get(i, ()):
+                    return True
+        return False
+
+    def _near_misses(self, a, eff, k, term):
+        """Per feature i, the near misses of term k of `eff`: the other effects' examples
+        that met every constraint of the term but the one on i, as (their value of i, their
+        cells acted on that the term does not constrain) (built once per change of
+        knowledge)."""
+        index = self.failure_index.setdefault(a, {})
+        hit = index.get((eff, k, "near"))
+        if hit is None:
+            rest = tuple(sorted(self._cells_acted_on(eff) - {i for i, _ in term}))
+            table = {}
+            for e, gs in self.examples[a].items():
+                if e == eff:
+                    continue
+                for g in gs:
+                    missed = [i for i, allowed in term if g[i] not in allowed]
+                    if len(missed) == 1:
+                        table.setdefault(missed[0], set()).add((g[missed[0]],) + tuple(g[j] for j in rest))
+            hit = index[(eff, k, "near")] = (rest, table)
+        return hit
 
     def _failures(self, a, eff, k, term):
         """The features term k of `eff` constrains or the effect acts on, and the other
