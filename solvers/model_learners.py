@@ -8,13 +8,8 @@ Both answer `predict(s, a)` with the next state, or None when they do not know y
 """
 from __future__ import annotations
 
-import re
-
 from ..model import Model
-
-# Compass names of a facing attribute's values (spec section 2): the direction ahead as
-# (dx, dz) in the world's x and z.
-COMPASS = {"south": (0, 1), "west": (-1, 0), "north": (0, -1), "east": (1, 0)}
+from .perception import NOTHING, Perception
 
 
 class Tabular:
@@ -34,58 +29,34 @@ class Tabular:
 
 
 class ObjectOriented:
-    """DOORMax-style learner. An action's *effect* -- the agent's attributes set to new
-    values, its position moved by a delta, cells changed relative to it -- is learned as a
-    function of *conditions* over local features: the agent's attributes other than its
-    position, what an index attribute points to (the item held, not the slot number), and
-    the cells next to it (within `radius` in the plane, three layers). Nothing is keyed by
-    absolute position, so what is learned in one cell holds in every cell with the same
-    surroundings, and (with the same domain) in other dungeons.
+    """DOORMax-style learner over what `Perception` sees. An action's *effect*
+    (attributes stepped or set, position moved, cells changed: all relative to the agent)
+    is learned as a function of *conditions* over the perceived features, so what is
+    learned in one place holds wherever the surroundings look the same, whichever way the
+    agent faces, and (with the same domain) in other dungeons.
 
-    Each effect's condition is a disjunction of terms: its examples are covered greedily
-    by terms that drop a feature seen with two values, as long as they cover no example
-    of another effect; each term is then cut to the fewest constraints that still rule
-    those out (the most general condition the data allow). A state is predicted by the
-    one effect whose condition holds, or by what was seen in exactly these features.
-    "Nothing happened" has many reasons and is not generalised: it is predicted where it
-    was seen (up to which slot is selected), or where DOORMax's failure conditions rule out
-    every effect the action is known to have (a failure seen in the same conditions, or a
-    value seen to block the action in a near miss). Anything else is unknown, hence optimistic;
-    a wrong prediction falls back to what was seen in that very state.
+    Effects: an effect's condition is a disjunction of terms that cover its examples and
+    no example of another effect; each term is cut to the fewest constraints that still
+    rule those out, taken first from the agent itself, what it holds and what the effect
+    acts on (`_simplest`). It is trusted only where what the effect acts on looks as it
+    did in its examples (`_familiar`); two trusted effects are decided by the nearest.
+
+    Nothing happening has many reasons and gets no condition of its own. It is predicted
+    where it was seen, remembered by the agent, what it holds and the cells actions act
+    on (`_noop_key`), or where every effect the action is known to have is ruled out: by
+    a failure seen under the same conditions, or by a value seen to block the action in
+    a near miss (`_all_fail`, `_blocks`). Anything else is unknown, hence optimistic for
+    R-max; a wrong prediction falls back to what was seen in that very state.
     """
 
     def __init__(self, model: Model, m: int = 1, radius: int = 1):
         self.model, self.m = model, m
-        g = model.grid
-        self.pos = [p[0] if p is not None else None for p in model.position]
-        pos_idx = {i for i in self.pos if i is not None}
-        self.attrs = [v.index for v in model.variables if v.index not in pos_idx]
-        self.cyclic = {v.index: v.hi - v.lo + 1 for v in model.variables if v.type == "int"}
-        self.pointers = self._pointers(model, pos_idx)
-        self.index_features = {self.attrs.index(v) for v, _ in self.pointers}
-        self.facing, self.ahead = self._frame(model)
-        agent = next((model.variables[i].label.split(".")[0] for i in self.pos if i is not None), None)
-        self.noop_features = [k for k, i in enumerate(self.attrs)
-                              if model.variables[i].label.split(".")[0] == agent
-                              and i != self.facing and k not in self.index_features]
-        self.noop_features += range(len(self.attrs), len(self.attrs) + len(self.pointers))
-        # The cells around the agent in its own frame: (ahead, up, right).
-        self.offsets = [(da, dy, dr) for dy in (-1, 0, 1) for da in range(-radius, radius + 1)
-                        for dr in range(-radius, radius + 1) if abs(da) + abs(dr) <= radius]
-        self.objects = self._objects(model)
-        self.plane = [(da, dr) for da, dy, dr in self.offsets if dy == 0]
-        # which object stands in each cell of the plane around the agent: part of what a
-        # no-op is remembered by (an action on an object happens only where it stands)
-        first_object = len(self.attrs) + len(self.pointers) + len(self.offsets)
-        self.noop_features += range(first_object, first_object + (len(self.plane) if self.objects else 0))
-        self.own = frozenset(self.noop_features)  # the agent, what it holds, who stands next to it
-        self.area = g.width * g.depth
-        self.span = {v.index: v.hi - v.lo for v in model.variables}
-        self.cache = {}          # state -> its feature tuple
+        self.sense = Perception(model, radius)
         self.exact = {}          # (action, features) -> effect
         self.examples = {}       # action -> {effect: [feature tuples]}
         self.terms = {}          # (action, effect) -> [term: list of allowed value sets per feature]
         self.general = {}        # (action, effect) -> the same terms with the fewest constraints
+        self.seen = {}           # (action, effect) -> [(feature of its locus, values seen in its examples)]
         self.noops = set()       # (action, what a no-op is remembered by: see _noop_key) where nothing happened
         self.noop_examples = []  # (action, features) of every no-op seen
         self.reach = set()       # features of the cells any action has changed or moved into
@@ -94,140 +65,10 @@ class ObjectOriented:
         self.fallback = Tabular(model, m)
         self.wrong = set()       # (state, action) where a generalised prediction failed
         self.answers = {}        # action -> {state: predicted next state}, until that action's knowledge changes
-        self.seen = {}           # (action, effect) -> [(feature of its locus, values seen in its examples)]
-
-    @staticmethod
-    def _objects(model):
-        """Other objects that stand in a cell (a domain's creatures, ...), each as a function of the
-        state giving its (x, z): read from the state where it moves, else where the
-        dungeon put it. Their cells are perceived like the grid's (`features`)."""
-        by_label = {v.label: v for v in model.variables}
-        out = []
-        for name, x, z in (model.display or {}).get("objects", ()):
-            vx, vz = by_label.get(f"{name}.x"), by_label.get(f"{name}.z")
-            if vx is not None and vz is not None:
-                out.append(lambda s, vx=vx, vz=vz: (s[vx.index] + vx.lo, s[vz.index] + vz.lo))
-            elif x is not None and z is not None:
-                out.append(lambda s, at=(x, z): at)
-        return out
-
-    @staticmethod
-    def _frame(model):
-        """The agent's own frame, when the domain declares which attribute is its facing and
-        names that attribute's values by compass direction (spec section 2): the state index
-        of the facing and, per stored value, the (dx, dz) ahead. Without it the frame is the
-        world's (ahead = +x, right = +z), and what is learned facing one way is not reused
-        facing another."""
-        facing = (model.display or {}).get("facing")
-        if not facing or facing.get("index") is None:
-            return None, {}
-        ahead = {value - facing["lo"]: COMPASS.get(str(name)) for value, name in facing["names"].items()}
-        if not ahead or None in ahead.values():
-            return None, {}
-        return facing["index"], ahead
-
-    def _axes(self, s):
-        """(dx, dz) of the agent's ahead in state s."""
-        return (1, 0) if self.facing is None else self.ahead.get(s[self.facing], (1, 0))
-
-    @staticmethod
-    def _to_world(axes, da, dr):
-        fx, fz = axes
-        return da * fx - dr * fz, da * fz + dr * fx
-
-    @staticmethod
-    def _to_frame(axes, dx, dz):
-        fx, fz = axes
-        return dx * fx + dz * fz, dz * fx - dx * fz
-
-    @staticmethod
-    def _pointers(model, skip):
-        """Integer attributes that index a list of objects (a selected slot), each with the
-        attributes of the object it points to: [(index variable, [variable per value])].
-        The object pointed to is what matters (the item held), not the number."""
-        lists = {}
-        for v in model.variables:
-            m = re.fullmatch(r"(.+)\[(\d+)\]\.(\w+)", v.label)
-            if m:
-                lists.setdefault((m.group(1), m.group(3)), {})[int(m.group(2))] = v.index
-        out = []
-        for v in model.variables:
-            if v.type != "int" or v.index in skip:
-                continue
-            for members in lists.values():
-                if sorted(members) == list(range(v.lo, v.hi + 1)):
-                    out.append((v.index, [members[k] for k in range(v.lo, v.hi + 1)]))
-        return out
-
-    def features(self, s):
-        f = self.cache.get(s)
-        if f is None:
-            x, y, z = self.model.agent_position(s)
-            cell, axes, world = self.model.grid.cell, self._axes(s), self._to_world
-            around = []
-            for da, dy, dr in self.offsets:
-                dx, dz = world(axes, da, dr)
-                around.append(cell(s, x + dx, y + dy, z + dz))
-            if self.objects:
-                standing = {where(s): k + 1 for k, where in reversed(list(enumerate(self.objects)))}
-                for da, dr in self.plane:
-                    dx, dz = world(axes, da, dr)
-                    around.append(standing.get((x + dx, z + dz), 0))
-            f = (tuple(s[i] for i in self.attrs) + tuple(s[members[s[i]]] for i, members in self.pointers)
-                 + tuple(around))
-            self.cache[s] = f
-        return f
-
-    def effect(self, s, n):
-        """What `n` changed in `s`, relative to the agent: integer attributes moved on by a
-        (cyclic) step, other attributes set, position moved and cells changed in its frame."""
-        sets = tuple((i, "add", (n[i] - s[i]) % self.cyclic[i]) if i in self.cyclic else (i, "set", n[i])
-                     for i in self.attrs if s[i] != n[i])
-        delta = [(n[i] - s[i]) if i is not None else 0 for i in self.pos]
-        axes = self._axes(s)
-        da, dr = self._to_frame(axes, delta[0], delta[2])
-        x, y, z = self.model.agent_position(s)
-        g = self.model.grid
-        cells = []
-        for i in range(g.base, len(s)):
-            if s[i] != n[i]:
-                layer, rest = divmod(i - g.base, self.area)
-                cz, cx = divmod(rest, g.width)
-                ca, cr = self._to_frame(axes, cx - x, cz - z)
-                cells.append((ca, g.layers[layer] - y, cr, n[i]))
-        return sets, (da, delta[1], dr), tuple(cells)
-
-    def apply_effect(self, s, eff):
-        sets, (da, dy, dr), cells = eff
-        n = bytearray(s)
-        for i, op, v in sets:
-            n[i] = (s[i] + v) % self.cyclic[i] if op == "add" else v
-        axes = self._axes(s)
-        dx, dz = self._to_world(axes, da, dr)
-        for i, d in zip(self.pos, (dx, dy, dz)):
-            if d:
-                if i is None:
-                    return None  # a static axis cannot move: the caller falls back
-                v = s[i] + d
-                if not 0 <= v <= self.span[i]:
-                    return None  # off the map: not a state; the caller falls back
-                n[i] = v
-        if cells:
-            g = self.model.grid
-            x, y, z = self.model.agent_position(s)
-            for ca, cy, cr, v in cells:
-                cdx, cdz = self._to_world(axes, ca, cr)
-                cx, cy, cz = x + cdx, y + cy, z + cdz
-                if cy not in g.layers or not (0 <= cx < g.width and 0 <= cz < g.depth):
-                    return None
-                n[g.base + g.layers.index(cy) * self.area + cz * g.width + cx] = v
-        return bytes(n)
 
     # -- terms ---------------------------------------------------------------------------
-    NOTHING = ((), (0, 0, 0), ())
-
     def _is_noop(self, eff):
-        return eff == self.NOTHING
+        return eff == NOTHING
 
     def _noop_key(self, f):
         """What a no-op is remembered by: the agent's own attributes but its facing (it
@@ -236,8 +77,12 @@ class ObjectOriented:
         (typically the column ahead of it). Where an action once did nothing,
         it is expected to do nothing again wherever all of these are the same."""
         if not self.reach:  # no action seen acting on a cell yet: every cell may matter
-            return tuple(v for i, v in enumerate(f) if i not in self.index_features)
-        return tuple(f[i] for i in self.noop_features) + tuple(f[i] for i in sorted(self.reach))
+            return tuple(v for i, v in enumerate(f) if i not in self.sense.index_features)
+        return tuple(f[i] for i in self.sense.own_features) + tuple(f[i] for i in sorted(self.reach))
+
+    def _cells_of(self, eff):
+        """The cell features in an effect's locus (its attributes left out)."""
+        return {i for i in self.sense.locus(eff) if i >= len(self.sense.attrs)}
 
     def _remember_noops(self):
         """(Re)build the no-op keys; a key under which the action also did something is
@@ -272,38 +117,17 @@ class ObjectOriented:
             else:
                 terms.append([frozenset((v,)) for v in f])
         self.terms[(a, eff)] = terms
-        locus = self._locus(eff)
-        preferred = locus | self.own
+        locus = self.sense.locus(eff)
+        preferred = locus | self.sense.own
         self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others, preferred))
                                         if allowed is not None) for t in terms]
         self.seen[(a, eff)] = [(i, {f[i] for f in mine}) for i in sorted(locus)]
-
-    def _locus(self, eff):
-        """The features an effect acts on: the attributes it changes, and the cells in the
-        columns it changes or moves into. Its condition is trusted only where these look as
-        they did in its examples (a block placed on one kind of floor is not expected to fill another),
-        and they are preferred when two constraints explain the data equally well."""
-        sets, (da, _, dr), cells = eff
-        columns = {(ca, cr) for ca, _, cr, _ in cells} | ({(da, dr)} if (da, dr) != (0, 0) else set())
-        first = len(self.attrs) + len(self.pointers)
-        return ({self.attrs.index(i) for i, _, _ in sets}
-                | {first + k for k, (oa, _, orr) in enumerate(self.offsets) if (oa, orr) in columns})
-
-    def _cells_acted_on(self, eff):
-        """The features of the very cells an effect changes or moves the agent into (for a
-        move, its whole column): narrower than the locus, whose whole columns are there to
-        guard an effect's own condition, not to tell which surroundings a failure shares."""
-        _, (da, _, dr), cells = eff
-        changed = {(ca, cy, cr) for ca, cy, cr, _ in cells}
-        first = len(self.attrs) + len(self.pointers)
-        return {first + k for k, (oa, oy, orr) in enumerate(self.offsets)
-                if (oa, oy, orr) in changed or (oa, orr) == (da, dr) != (0, 0)}
 
     @staticmethod
     def _simplest(term, others, preferred=frozenset()):
         """The fewest of a term's constraints that still rule out every example of the
         other effects (greedy set cover): the most general condition the data allow, so
-        that one turn seen facing north is expected wherever the agent faces north. It
+        that one move seen in one corridor is expected in every corridor. It
         may be too general; a wrong prediction adds the example that corrects it.
         Constraints on the `preferred` features -- the agent itself, what it holds, what
         the effect acts on -- are taken first: a coincidence elsewhere (what lay behind the
@@ -324,7 +148,7 @@ class ObjectOriented:
             self.wrong.add((s, a))
         self.fallback.observe(s, a, n)
         self.answers.get(a, {}).pop(s, None)
-        f, eff = self.features(s), self.effect(s, n)
+        f, eff = self.sense.features(s), self.sense.effect(s, n)
         if self.exact.get((a, f)) == eff:
             return
         self.exact[(a, f)] = eff
@@ -333,8 +157,8 @@ class ObjectOriented:
         if self._is_noop(eff):
             self.noop_examples.append((a, f))
             self.noops.add((a, self._noop_key(f)))
-        elif not self._locus(eff) - set(range(len(self.attrs))) <= self.reach:
-            self.reach |= self._locus(eff) - set(range(len(self.attrs)))
+        elif not self._cells_of(eff) <= self.reach:
+            self.reach |= self._cells_of(eff)
             self.predicted.clear()  # no-ops of every action are remembered by more now
             self.answers.clear()
         if not self._is_noop(eff):
@@ -361,7 +185,7 @@ class ObjectOriented:
         elif trusted:
             out = trusted[0]
         elif (not hits and (a, self._noop_key(f)) in self.noops) or self._all_fail(f, a):
-            out = self.NOTHING
+            out = NOTHING
         known[f] = out
         return out
 
@@ -433,7 +257,7 @@ class ObjectOriented:
         index = self.failure_index.setdefault(a, {})
         hit = index.get((eff, k, "near"))
         if hit is None:
-            rest = tuple(sorted(self._cells_acted_on(eff) - {i for i, _ in term}))
+            rest = tuple(sorted(self.sense.cells_acted_on(eff) - {i for i, _ in term}))
             table = {}
             for e, gs in self.examples[a].items():
                 if e == eff:
@@ -451,7 +275,7 @@ class ObjectOriented:
         index = self.failure_index.setdefault(a, {})
         hit = index.get((eff, k))
         if hit is None:
-            fixed = tuple(sorted({i for i, _ in term} | self._locus(eff)))
+            fixed = tuple(sorted({i for i, _ in term} | self.sense.locus(eff)))
             seen = {tuple(g[i] for i in fixed)
                     for e, gs in self.examples[a].items() if e != eff for g in gs}
             hit = index[(eff, k)] = (fixed, seen)
@@ -469,7 +293,7 @@ class ObjectOriented:
     def _predict(self, s, a):
         if (s, a) in self.wrong:
             return self.fallback.predict(s, a)
-        f = self.features(s)
+        f = self.sense.features(s)
         eff = self.exact.get((a, f))
         if eff is None:
             eff = self._generalised(f, a)
@@ -477,7 +301,7 @@ class ObjectOriented:
             return self.fallback.predict(s, a)
         if self._is_noop(eff):
             return s
-        return self.apply_effect(s, eff) or self.fallback.predict(s, a)
+        return self.sense.apply_effect(s, eff) or self.fallback.predict(s, a)
 
 
 LEARNERS = {"tabular": Tabular, "oo": ObjectOriented}
