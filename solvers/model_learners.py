@@ -38,8 +38,10 @@ class ObjectOriented:
     Effects: an effect's condition is a disjunction of terms that cover its examples and
     no example of another effect; each term is cut to the fewest constraints that still
     rule those out, taken first from the agent itself, what it holds and what the effect
-    acts on (`_simplest`). It is trusted only where what the effect acts on looks as it
-    did in its examples (`_familiar`); two trusted effects are decided by the nearest.
+    acts on (`_simplest`). It is trusted only where what the effect acts on, and the
+    agent itself, look as they did in its examples (`_familiar`); an effect that ended an
+    episode in failure is trusted wherever what it acts on looks the same, since testing
+    it again would cost a whole episode. Two trusted effects are decided by the nearest.
 
     Nothing happening has many reasons and gets no condition of its own. It is predicted
     where it was seen, remembered by the agent, what it holds and the cells actions act
@@ -60,6 +62,7 @@ class ObjectOriented:
         self.noops = set()       # (action, what a no-op is remembered by: see _noop_key) where nothing happened
         self.noop_examples = []  # (action, features) of every no-op seen
         self.reach = set()       # features of the cells any action has changed or moved into
+        self.fatal = set()       # effects seen ending the episode in failure
         self.predicted = {}      # action -> {features: effect or None}, until that action's knowledge changes
         self.failure_index = {}  # action -> {(effect, term): failure examples projected on its features}
         self.fallback = Tabular(model, m)
@@ -121,7 +124,8 @@ class ObjectOriented:
         preferred = locus | self.sense.own
         self.general[(a, eff)] = [tuple((i, allowed) for i, allowed in enumerate(self._simplest(t, others, preferred))
                                         if allowed is not None) for t in terms]
-        self.seen[(a, eff)] = [(i, {f[i] for f in mine}) for i in sorted(locus)]
+        watched = locus if eff in self.fatal else locus | self.sense.own
+        self.seen[(a, eff)] = [(i, {f[i] for f in mine}) for i in sorted(watched)]
 
     @staticmethod
     def _simplest(term, others, preferred=frozenset()):
@@ -154,6 +158,8 @@ class ObjectOriented:
         self.exact[(a, f)] = eff
         by_effect = self.examples.setdefault(a, {})
         by_effect.setdefault(eff, []).append(f)
+        if self.model.is_failure(n):
+            self.fatal.add(eff)
         if self._is_noop(eff):
             self.noop_examples.append((a, f))
             self.noops.add((a, self._noop_key(f)))

@@ -38,8 +38,8 @@ def test_rmax_oo_converges_on_bridge_to_the_optimal_plan():
     result = get_solver("rmax")(compiled("bridge"), BUDGET, learner="oo", episodes=8, seed=0, optimal_cost=cost)
     assert result.solved and result.cost == cost
     assert replay(compiled("bridge"), [(a, 1, 1) for a in result.plan]).valid
-    # measured: 3-5 episodes spent learning over seeds 0-9 (bench/learn_curves.py)
-    assert result.converged_episode is not None and result.converged_episode <= 5
+    # measured: 2 episodes spent learning on 8 of seeds 0-9, 3 on the others
+    assert result.converged_episode is not None and result.converged_episode <= 3
 
 
 def test_tabular_rmax_converges_on_bridge_after_many_deaths():
@@ -127,7 +127,7 @@ def test_rmax_oo_converges_on_the_tough_maze_where_the_imagined_graph_is_too_big
     # 43 steps and six stones to mine: more states within the goal's distance than value
     # iteration may hold (MAX_IMAGINED); R-max then follows the shortest imagined path.
     cost = optimal("tough_maze")
-    result = get_solver("rmax")(compiled("tough_maze"), Budget(time_limit=600), learner="oo", episodes=3, seed=1,
+    result = get_solver("rmax")(compiled("tough_maze"), Budget(time_limit=600), learner="oo", episodes=3, seed=0,
                                 optimal_cost=cost)
     assert result.solved and result.cost == cost and result.converged_episode is not None
     assert replay(compiled("tough_maze"), [(a, 1, 1) for a in result.plan]).valid
