@@ -5,7 +5,7 @@ import sys
 
 import click
 
-from ..cli import EXIT_OK, emit_json, goal_option, json_option
+from ..cli import EXIT_NO_SOLUTION, EXIT_OK, emit_json, goal_option, json_option
 from ..errors import BccError
 
 
@@ -104,6 +104,11 @@ def report_cmd(results, plot_path, as_json):
         click.echo(f"{results}: ignored lines that are not rows: {', '.join(map(str, contents.bad_lines))}", err=True)
     if contents.torn_tail:
         click.echo(f"{results}: ignored a torn last line ({contents.torn_tail} bytes)", err=True)
+    if not contents.rows:  # nothing to summarise (or plot): say so, and exit 1 as for no result
+        if as_json:
+            emit_json({"results": results, "rows": 0, "solvers": [], "plot": None, "plotted_points": None})
+        click.echo(f"{results}: no runs recorded yet", err=True)
+        sys.exit(EXIT_NO_SOLUTION)
     summary = summarise(contents.rows)
     points = plot(contents.rows, plot_path) if plot_path else None
     if as_json:

@@ -337,6 +337,11 @@ def test_report_table_json_and_plot(tmp_path):
     result = bcc("batch", "report", str(out), "--plot", str(png))
     assert result.exit_code == 0 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert bcc("batch", "report", str(tmp_path / "none.jsonl")).exit_code == 2
+    empty = tmp_path / "empty.jsonl"
+    empty.write_text("")
+    nothing = bcc("batch", "report", str(empty), "--json")
+    assert nothing.exit_code == 1 and json.loads(nothing.stdout)["rows"] == 0
+    assert "no runs recorded yet" in bcc("batch", "report", str(empty)).output
 
 
 def test_progress_bar_counts_done_failed_rate_and_eta():
