@@ -10,6 +10,19 @@ from pathlib import Path
 from .errors import BccError
 
 
+def check_writable(path: str | Path) -> None:
+    """Fail now, with the message `write_bytes` would give, if `path` cannot be written:
+    for commands that work a long time (a play session, a solve) before they write."""
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        raise BccError(f"cannot write {path}: {exc.strerror}") from None
+    os.close(fd)
+    Path(tmp).unlink(missing_ok=True)
+
+
 def write_text(path: str | Path, text: str) -> None:
     write_bytes(path, text.encode("utf-8"))
 

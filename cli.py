@@ -149,6 +149,9 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     from .solvers.heuristics import HEURISTICS
     model = compile_model(dungeon, goal)
     solve = get_solver(solver)
+    if output:
+        from .atomic import check_writable
+        check_writable(output)   # before a long solve, not after it
     options = {}
     if heuristic is not None:
         if heuristic not in HEURISTICS and heuristic != "auto":

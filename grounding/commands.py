@@ -26,9 +26,12 @@ def play_cmd(dungeon, record, command_text, as_json):
     """Play DUNGEON in the terminal: one key per action, the map redrawn each step, q quits.
 
     On a terminal keys act at once; from a pipe each line is a string of keys."""
+    from ..atomic import check_writable
     from .demonstration import extract
     from .play import line_keys, play, tty_keys
     model = compile_model(dungeon, None)
+    if record:
+        check_writable(record)   # before the session, not after it
     interactive = sys.stdin.isatty() and sys.stdout.isatty() and not as_json
     keys = tty_keys() if interactive else line_keys(sys.stdin)
     out = (lambda text: click.echo(text, err=True)) if as_json else click.echo

@@ -200,3 +200,17 @@ def test_a_missing_extra_is_one_line_naming_it(monkeypatch, tmp_path, module, ar
     args = [a.format(results=results, tmp=tmp_path) for a in args]
     line = one_line_error(bcc(*args))
     assert f'pip install "{extra}"' in line
+
+
+# ---- outputs that cannot be written are refused before the work, not after -------------
+
+@pytest.mark.parametrize("args", [["play", "grid", "--record", "{missing}/demo.json"],
+                                  ["solve", "grid", "-o", "{missing}/plan.txt"]])
+def test_an_unwritable_output_is_refused_before_the_work(tmp_path, args):
+    missing = tmp_path / "no" / "such" / "folder"
+    args = [a.format(missing=missing) for a in args]
+    result = CliRunner().invoke(main, args, input="llq\n")
+    line = one_line_error(result)
+    assert line.startswith(f"cannot write {missing}/") and "No such file or directory" in line
+    assert "action(s)" not in result.stdout and "solved" not in result.stdout   # nothing ran
+    assert not missing.exists()
