@@ -297,13 +297,14 @@ def list_cmd(as_json):
 @json_option
 def solvers_cmd(as_json):
     """List the available solvers (built-in and plugins)."""
-    from .solvers import list_solvers
-    solvers = list_solvers()
+    from .solvers import describe_solvers
+    solvers = describe_solvers()
     if as_json:
         emit_json({"solvers": solvers})
         return
+    width = max(map(len, solvers))
     for name, doc in solvers.items():
-        click.echo(f"  {name:<8} {doc}")
+        click.echo(f"  {name:<{width}} {doc}")
 
 
 @main.group("generate")

@@ -99,7 +99,9 @@ def _read_plan(path: str):
 
 
 def solve(model, budget, progress=None, search: str | None = None, **_):
-    """The `fd` solver: export `model`, run Fast Downward, return a bcc Result."""
+    """Fast Downward on the exact PDDL export (--fd-search CONFIG, default astar(lmcut()))
+
+    The `fd` solver: export `model`, run Fast Downward, return a bcc Result."""
     from ..atomic import write_text
     from ..solvers.base import Result
     from .task import build_task

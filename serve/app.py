@@ -100,8 +100,8 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
 
     @app.get("/solvers", summary="The available solvers")
     def solvers():
-        from ..solvers import list_solvers
-        return {"solvers": list_solvers()}
+        from ..solvers import describe_solvers
+        return {"solvers": describe_solvers()}
 
     # ---- compile, draw, step ----------------------------------------------------
     @app.post("/compile", responses={**ERRORS, 422: {"model": ErrorBody}},

@@ -18,8 +18,8 @@ BUILTIN = {
     "wastar": ("bcc.solvers.astar:solve_weighted", "weighted A*, f = g + w h (--weight, default 2; cost <= w x optimal)"),
     "gbfs": ("bcc.solvers.gbfs:solve", "greedy best-first search (fast, not optimal)"),
     "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
-    "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning (--model tabular|oo, --episodes, --seed)"),
-    "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline (--episodes, --seed)"),
+    "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning (--model tabular|oo, --episodes, --seed, --gamma, --delta, --known-after, --max-steps)"),
+    "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline (--episodes, --seed, --gamma, --max-steps)"),
 }
 
 __all__ = ["Budget", "Result", "get_solver", "list_solvers", "optimal_cost", "LEARNING"]
@@ -46,6 +46,22 @@ def list_solvers() -> dict[str, str]:
     out = {name: doc for name, (_, doc) in BUILTIN.items()}
     for name, ep in _plugins().items():
         out.setdefault(name, f"plugin from {ep.value}")
+    return out
+
+
+def describe_solvers() -> dict[str, str]:
+    """`list_solvers`, with each plugin described by the first line of its docstring
+    (loading it; a plugin that fails to load says so)."""
+    out = list_solvers()
+    for name, ep in _plugins().items():
+        if name in BUILTIN:
+            continue
+        try:
+            doc = (ep.load().__doc__ or "").strip().splitlines()
+        except Exception as exc:  # noqa: BLE001 - described, not raised: `bcc solvers` lists the rest
+            out[name] = f"plugin from {ep.value} (fails to load: {exc})"
+            continue
+        out[name] = f"{doc[0].rstrip('.')} (plugin: {ep.value})" if doc else f"plugin from {ep.value}"
     return out
 
 

@@ -68,6 +68,9 @@ def bcc(env, *args, stdin=None):
     return subprocess.run([*cmd, *args], input=stdin, capture_output=True, text=True, env=env, timeout=60)
 
 
+SOLVE_DOC = "Depth-first search, a demonstration plugin (not optimal)"   # bcc_plugin_demo.solve's docstring
+
+
 def test_solvers_lists_plugins_besides_builtins(plugin_env):
     proc = bcc(plugin_env, "solvers", "--json")
     assert proc.returncode == 0, proc.stderr
@@ -75,6 +78,9 @@ def test_solvers_lists_plugins_besides_builtins(plugin_env):
     assert BUILTINS <= set(solvers)
     assert {"dfs", "broken"} <= set(solvers)
     assert "bcc_plugin_demo:solve" in solvers["dfs"]
+    # described by the first line of the plugin's docstring; a plugin that cannot load says so
+    assert solvers["dfs"].startswith(SOLVE_DOC)
+    assert "fails to load" in solvers["broken"]
 
 
 def test_dfs_plugin_solves_and_its_plan_validates(plugin_env):

@@ -14,6 +14,7 @@ NAME = "dfs"
 
 
 def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
+    """Depth-first search, a demonstration plugin (not optimal)."""
     meter = Meter(budget, progress)
     start = model.initial
     parents = {start: None}  # state -> (previous state, action index); doubles as the visited set
