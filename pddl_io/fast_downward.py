@@ -81,7 +81,8 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
             return FdRun(False, [], None, seconds, "no_solution", "no plan exists (Fast Downward proved it)")
         if proc.returncode in OUT_OF_BUDGET:
             return FdRun(False, [], None, seconds, "budget", "stopped: Fast Downward ran out of time or memory")
-        tail = (proc.stderr.strip() or proc.stdout.strip()).splitlines()[-3:]
+        said = [line.strip() for line in (proc.stderr.strip() or proc.stdout.strip()).splitlines()]
+        tail = [line for line in said if line.strip("^~ ")][-3:]   # a caret line says nothing here
         return FdRun(False, [], None, seconds, "error",
                      f"Fast Downward failed (exit {proc.returncode}): {' | '.join(tail)}")
 

@@ -108,3 +108,12 @@ def test_imported_problems_cost_equals_fd(domain, problem):
     fd = fast_downward.run(d, p, time_limit=60)
     for solver in ("astar", "bfs"):
         assert get_solver(solver)(model, Budget(time_limit=60)).cost == fd.cost
+
+
+def test_a_bad_search_is_one_line_naming_what_fast_downward_did_not_know():
+    from bcc.errors import BccError
+    with pytest.raises(BccError) as caught:
+        fast_downward.solve(compile_dungeon("grid"), Budget(time_limit=60), search="astar(nosuch())")
+    line, = str(caught.value).strip().splitlines()
+    assert line.startswith("Fast Downward failed") and "'nosuch'" in line
+    assert "|  |" not in line and ":  |" not in line   # no empty piece where FD drew its caret
