@@ -196,6 +196,8 @@ class ObjectOriented:
         return out
 
     def _familiar(self, f, a, eff):
+        """Whether f shows, on the features the effect is watched on, only values its own
+        examples had (see `_learn_terms`)."""
         return all(f[i] in values for i, values in self.seen[(a, eff)])
 
     def _nearest(self, f, a, effects):
