@@ -356,7 +356,16 @@ function botNamed (name) {
 async function settleLook (bot, p, yaw, pitch) {
   const wantYaw = byteAngle(yaw)
   const wantPitch = byteAngle(pitch)
-  await until(() => sameAngle(p.yaw, wantYaw) && sameAngle(p.pitch, wantPitch), 3000, 'the server seeing the new view direction')
+  const seen = () => sameAngle(p.yaw, wantYaw) && sameAngle(p.pitch, wantPitch)
+  for (let tries = 1; ; tries++) {
+    try {
+      return await until(seen, 2000, 'the server seeing the new view direction')
+    } catch (err) {
+      if (tries >= 3) throw err
+      // a look sent while the server was busy (just after a teleport) can be lost: send it again
+      await bot.look(mfYaw(yaw), mfPitch(pitch), true)
+    }
+  }
 }
 
 // A late position packet from the server may still turn the bot after settleLook:
