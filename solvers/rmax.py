@@ -10,7 +10,8 @@ relevant to the goal (`model.search_actions`: knowledge of the YAML domain, not 
 dynamics); `all_actions=True` uses all of them.
 Unknown state-action pairs are optimistic (R_max = 0, the best possible return with -1
 per step), so the agent goes for the nearest unknown or the goal. Planning is value
-iteration (gamma, stop at delta) over the states its model can imagine from here.
+iteration (gamma, stop at delta) over the states its model imagines from here, as far as
+the nearest goal or unknown (`_plan_values`); it plans again after any surprise.
 
 Learners:
 - `tabular`: one entry per (state, action), known after m visits.
