@@ -10,15 +10,19 @@ from pathlib import Path
 from .errors import BccError
 
 
+def _temporary(path: Path) -> tuple[int, str]:
+    """A new temporary file beside `path` (fd, name); BccError if the folder cannot take one."""
+    directory = path.parent if str(path.parent) else Path(".")
+    try:
+        return tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        raise BccError(f"cannot write {path}: {exc.strerror}") from None
+
+
 def check_writable(path: str | Path) -> None:
     """Fail now, with the message `write_bytes` would give, if `path` cannot be written:
     for commands that work a long time (a play session, a solve) before they write."""
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as exc:
-        raise BccError(f"cannot write {path}: {exc.strerror}") from None
+    fd, tmp = _temporary(Path(path))
     os.close(fd)
     Path(tmp).unlink(missing_ok=True)
 
@@ -29,11 +33,7 @@ def write_text(path: str | Path, text: str) -> None:
 
 def write_bytes(path: str | Path, data: bytes) -> None:
     path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as exc:
-        raise BccError(f"cannot write {path}: {exc.strerror}") from None
+    fd, tmp = _temporary(path)
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
