@@ -145,7 +145,7 @@ def progress_enabled():
 def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, learner,
               episodes, seed, gamma, delta, m, max_steps, fd_search, goal):
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
-    from .solvers import Budget, LEARNING, get_solver, optimal_cost
+    from .solvers import Budget, LEARNING, get_solver, learning_options, optimal_cost
     from .solvers.heuristics import HEURISTICS
     model = compile_model(dungeon, goal)
     solve = get_solver(solver)
@@ -168,24 +168,9 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
             raise BccError("--fd-search applies to the fd solver only")
         options["search"] = fd_search
     learning = solver in LEARNING
-    tuning = {"episodes": episodes, "seed": seed, "gamma": gamma, "max_steps": max_steps}
-    rmax_only = {"learner": learner, "delta": delta, "m": m}
-    flag = {"learner": "--model", "m": "--known-after", "max_steps": "--max-steps"}
-    for k, v in rmax_only.items():
-        if v is not None:
-            if solver != "rmax":
-                raise BccError(f"{flag.get(k, '--' + k)} applies to rmax only")
-            options[k] = v
-    given = [k for k, v in tuning.items() if v is not None]
-    if given and not learning:
-        raise BccError(f"{', '.join(flag.get(k, '--' + k) for k in given)}: for the learning solvers (rmax, qlearning) only")
-    for k in ("gamma", "max_steps"):
-        if tuning[k] is not None:
-            options[k] = tuning[k]
-    if episodes:
-        options["episodes"] = episodes
-    if seed is not None:
-        options["seed"] = seed
+    options.update(learning_options(
+        solver, {"learner": learner, "delta": delta, "m": m, "episodes": episodes, "seed": seed, "gamma": gamma,
+                 "max_steps": max_steps}, LEARNING_FLAGS))
     if learning:  # converged_episode compares with the optimal cost, found by A*
         options["optimal_cost"] = optimal_cost(model)
     default = Budget.default()
@@ -210,6 +195,10 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     if not result.solved:
         click.echo(f"{model.path}: {result.message}", err=True)
     sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
+
+
+LEARNING_FLAGS = {"learner": "--model", "delta": "--delta", "m": "--known-after", "episodes": "--episodes",
+                  "seed": "--seed", "gamma": "--gamma", "max_steps": "--max-steps"}
 
 
 def _read_plan_arg(plan: str):

@@ -2,7 +2,11 @@
 from __future__ import annotations
 
 from ..errors import BccError
-from ..solvers import LEARNING, list_solvers
+from ..solvers import LEARNING, learning_options, list_solvers
+
+# the JSON fields of the learning solvers' options (see schemas.SolveRequest)
+FIELDS = {"learner": "model", "delta": "delta", "m": "known_after", "episodes": "episodes", "seed": "seed",
+          "gamma": "gamma", "max_steps": "max_steps"}
 
 
 def solver_options(req) -> dict:
@@ -24,15 +28,6 @@ def solver_options(req) -> dict:
         if req.solver not in ("astar", "wastar"):
             raise BccError("`weight` applies to astar and wastar only")
         options["weight"] = req.weight
-    rmax_only = {"learner": req.model, "delta": req.delta, "m": req.known_after}
-    for (key, value), field in zip(rmax_only.items(), ("model", "delta", "known_after")):
-        if value is not None:
-            if req.solver != "rmax":
-                raise BccError(f"`{field}` applies to rmax only")
-            options[key] = value
-    tuning = {"episodes": req.episodes, "seed": req.seed, "gamma": req.gamma, "max_steps": req.max_steps}
-    given = [k for k, v in tuning.items() if v is not None]
-    if given and req.solver not in LEARNING:
-        raise BccError(f"{', '.join(f'`{k}`' for k in given)}: for the learning solvers (rmax, qlearning) only")
-    options.update((k, v) for k, v in tuning.items() if v is not None)
+    options.update(learning_options(req.solver, {key: getattr(req, field) for key, field in FIELDS.items()},
+                                    {key: f"`{field}`" for key, field in FIELDS.items()}))
     return options

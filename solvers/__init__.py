@@ -27,6 +27,23 @@ __all__ = ["Budget", "Result", "get_solver", "list_solvers", "optimal_cost", "LE
 LEARNING = ("rmax", "qlearning")   # learn from episodes; report `converged_episode` against A*
 
 
+def learning_options(solver: str, given: dict, spelled: dict) -> dict:
+    """The learning solvers' options among `given` (option -> value, None when not given),
+    checked for `solver`; a BccError names an option that does not apply as the user
+    spelled it (`spelled`: a flag, a JSON field)."""
+    out = {}
+    for key in ("learner", "delta", "m"):
+        if given.get(key) is not None:
+            if solver != "rmax":
+                raise BccError(f"{spelled[key]} applies to rmax only")
+            out[key] = given[key]
+    rest = [key for key in ("episodes", "seed", "gamma", "max_steps") if given.get(key) is not None]
+    if rest and solver not in LEARNING:
+        raise BccError(f"{', '.join(spelled[key] for key in rest)}: for the learning solvers (rmax, qlearning) only")
+    out.update((key, given[key]) for key in rest)
+    return out
+
+
 def optimal_cost(model, time_limit: float = 60, max_memory_mb: float | None = None) -> int | None:
     """A*'s cost, the yardstick of a learning solver's `converged_episode` (None when A*
     finds no plan within the limits)."""
