@@ -40,10 +40,22 @@ def _world(model: Model, s: bytes, a: int) -> bytes:
     return s if n is None else n
 
 
+class Kinds(dict):
+    """state -> "goal", "dead" or None, by the given terminal function, each computed once
+    and remembered across plans."""
+
+    def __init__(self, model: Model):
+        super().__init__()
+        self.model = model
+
+    def __missing__(self, s):
+        k = self[s] = "goal" if self.model.is_goal(s) else ("dead" if self.model.is_failure(s) else None)
+        return k
+
+
 def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value, kinds, toward_goal=None):
     """Value iteration over the states the learned model imagines from `start`; the given
-    terminal function says which imagined states end the episode (`kinds` remembers it
-    across plans: state -> "goal", "dead" or None).
+    terminal function says which imagined states end the episode (`kinds`, a `Kinds`).
 
     The imagined states are visited breadth first, and only as deep as the nearest
     *target* -- a goal, or a state with an action the model cannot predict (worth R_max).
@@ -55,13 +67,7 @@ def _plan_values(model: Model, learner, start, actions, gamma, delta, dead_value
     cannot be valued state by state: then `toward_goal(start)` may give a plan that follows
     the shortest imagined path to the goal (unknowns beyond the cap are not explored);
     without one, the states beyond the cap are optimistic."""
-    is_goal, is_failure = model.is_goal, model.is_failure
-
-    def kind(n):
-        k = kinds.get(n, False)
-        if k is False:
-            k = kinds[n] = "goal" if is_goal(n) else ("dead" if is_failure(n) else None)
-        return k
+    kind = kinds.__getitem__
 
     index, order, frontier, succ, edge = {start: 0}, [start], [start], {}, None
     while frontier and len(order) < MAX_IMAGINED:
@@ -133,7 +139,7 @@ def _shortest_to_goal(model: Model, learner, start, actions, kinds, h, limit: in
         _, gs, _, s = heapq.heappop(heap)
         if s in closed:
             continue
-        if kinds.get(s) == "goal" or (s not in kinds and model.is_goal(s)):
+        if kinds[s] == "goal":
             path = []
             while parent[s] is not None:
                 prev, k = parent[s]
@@ -145,8 +151,6 @@ def _shortest_to_goal(model: Model, learner, start, actions, kinds, h, limit: in
             n = learner.predict(s, a)
             if n is None or n == s or n in closed:
                 continue
-            if n not in kinds:
-                kinds[n] = "goal" if model.is_goal(n) else ("dead" if model.is_failure(n) else None)
             if kinds[n] == "dead" or gs + 1 >= g.get(n, gs + 2):
                 continue
             g[n], parent[n] = gs + 1, (s, k)
@@ -191,7 +195,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
     actions = list(range(len(model.action_names))) if all_actions or not model.search_actions \
         else list(model.search_actions)
     dead_value = -1.0 / (1.0 - gamma)
-    kinds = {}
+    kinds = Kinds(model)
     from .heuristics import manhattan
     distance, where, longest = manhattan(model), model.agent_position, [0]
 

@@ -71,7 +71,7 @@ def test_planning_only_as_deep_as_the_nearest_target_keeps_the_values(monkeypatc
     model = compiled("bridge")
     rmax.solve(model, BUDGET, learner="oo", episodes=episodes, seed=0)
     know, actions, gamma = learners[0], list(model.search_actions), 0.99
-    q = rmax._plan_values(model, know, model.initial, actions, gamma, 0.001, -1 / (1 - gamma), {})
+    q = rmax._plan_values(model, know, model.initial, actions, gamma, 0.001, -1 / (1 - gamma), rmax.Kinds(model))
     depth, frontier, seen_states = 0, [model.initial], {model.initial}
     while True:
         nexts = [know.predict(x, a) for x in frontier for a in actions]
@@ -114,7 +114,7 @@ def test_the_shortest_imagined_path_to_the_goal_is_optimal_in_that_model():
     from bcc.solvers.heuristics import manhattan
     for name in ("easy_maze", "bridge"):
         model = compiled(name)
-        path = rmax._shortest_to_goal(model, _Oracle(model), model.initial, list(model.search_actions), {},
+        path = rmax._shortest_to_goal(model, _Oracle(model), model.initial, list(model.search_actions), rmax.Kinds(model),
                                       rmax._steps_left(manhattan(model), 1))
         assert len(path) == get_solver("bfs")(model, BUDGET).cost           # a second solver's cost
         assert model.is_goal(path[-1][2]) and all(p[2] == q[0] for p, q in zip(path, path[1:]))
