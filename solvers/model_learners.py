@@ -163,11 +163,12 @@ class ObjectOriented:
         if self._is_noop(eff):
             self.noop_examples.append((a, f))
             self.noops.add((a, self._noop_key(f)))
-        elif not self._cells_of(eff) <= self.reach:
-            self.reach |= self._cells_of(eff)
-            self.predicted.clear()  # no-ops of every action are remembered by more now
-            self.answers.clear()
-        if not self._is_noop(eff):
+        else:
+            cells = self._cells_of(eff)
+            if not cells <= self.reach:
+                self.reach |= cells
+                self.predicted.clear()  # no-ops of every action are remembered by more now
+                self.answers.clear()
             self._remember_noops()
         for other in by_effect:  # effects whose terms cover this example must be split
             if self._is_noop(other):
