@@ -5,7 +5,18 @@ The loader, the parser and the compiler raise `BccError`; the CLI prints it once
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
+
+# C0/C1 control characters (tab and newline allowed), line separators and lone surrogates:
+# what must never reach a terminal or a log raw.
+CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\ud800-\udfff]")
+
+
+def printable(text: str) -> str:
+    """`text` with control characters, terminal escapes and lone surrogates escaped, for
+    printing anything that may hold input (an error message, a path, a name)."""
+    return CONTROL.sub(lambda m: m.group().encode("unicode_escape", "backslashreplace").decode("ascii"), text)
 
 
 class BccError(Exception):
@@ -28,8 +39,10 @@ class BccError(Exception):
         return self
 
     def __str__(self) -> str:
+        """`file:line:col: message`, with any control character or terminal escape escaped
+        (a message may quote input)."""
         where = [str(p) for p in (self.path, self.line, self.col) if p is not None]
-        return ":".join(where + [" " + self.message]) if where else self.message
+        return printable(":".join(where + [" " + self.message]) if where else self.message)
 
 
 class ModelError(Exception):

@@ -6,19 +6,18 @@ resolved yet; `ground.py` gives names their meaning once a dungeon supplies obje
 """
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import BccError
 from . import ast
+from .names import check_name, check_text
 from .parse import parse_effects, parse_expression
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest, Origin
 
 DOMAINS_DIR = Path(__file__).resolve().parent.parent / "domains"
 BUILTIN_TYPES = ("int", "bool")
 SIZE_CONSTANTS = ("width", "height", "depth")
-_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 
 
 @dataclass(frozen=True)
@@ -157,6 +156,9 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
     failure = _expr(data, "failure") if "failure" in data else (base.failure if base else None)
     binding = _merge_binding(data, base)
     _check_binding(data, binding, classes)
+    _ident(data, "domain", data["domain"], "the domain name")
+    if "description" in data:
+        check_text(data, "description", data["description"], "the description")
     return Domain(str(data["domain"]), str(path), str(data.get("description", "")).strip(), enums,
                   constants, classes, functions, actions, failure, binding, data)
 
@@ -282,9 +284,7 @@ def _expr(container, key, effects: bool = False) -> Expr:
 
 
 def _ident(container, key, value, what: str) -> str:
-    if not isinstance(value, str) or not _IDENT.match(value):
-        raise error_at(container, key, f"{what} must be a name (letters, digits, _), found {value!r}")
-    return value
+    return check_name(container, key, value, what)
 
 
 def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
@@ -424,6 +424,8 @@ def _load_attr(section, aname, adef, enums) -> AttrDef:
     names = adef.get("names") or YMap()
     if not isinstance(names, YMap) or not all(isinstance(v, int) and not isinstance(v, bool) for v in names.values()):
         raise error_at(adef, "names", "`names` maps value names to numbers, e.g. {north: 2}")
+    for vname in names:
+        _ident(names, vname, vname, "a value name")
     names = dict(names)
     default = adef.get("default")
     if default is None:

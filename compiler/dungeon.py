@@ -13,6 +13,7 @@ import numpy as np
 
 from ..errors import BccError
 from .domain import Domain, Expr, _expr, load_domain, resolve_domain_path
+from .names import check_name, check_text, name_from_stem
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest
 
 DUNGEONS_DIR = Path(__file__).resolve().parent.parent / "dungeons"
@@ -142,7 +143,13 @@ class _Builder:
                 if len(column) > height:
                     raise error_at(data["legend"], ch, f"the column {ch!r} has {len(column)} blocks but `height` is {height}")
                 grid[:len(column), z, x] = column
-        dungeon = Dungeon(str(data.get("dungeon", self.path.stem)), str(self.path),
+        if "dungeon" in data:
+            name = check_name(data, "dungeon", data["dungeon"], "the dungeon name")
+        else:
+            name = name_from_stem(self.path.stem)
+        if "description" in data:
+            check_text(data, "description", data["description"], "the description")
+        dungeon = Dungeon(name, str(self.path),
                           str(data.get("description", "")).strip(), d, width, depth, height,
                           gclass.name, grid, {})
         dungeon.legend_columns = legend
@@ -159,8 +166,8 @@ class _Builder:
             raise error_at(self.data, "legend", "`legend` maps one character to a column of block names")
         out = {}
         for ch, column in legend.items():
-            if not isinstance(ch, str) or len(ch) != 1:
-                raise error_at(legend, ch, f"a legend key is one character, found {ch!r}", on_key=True)
+            if not isinstance(ch, str) or len(ch) != 1 or not ch.isprintable():
+                raise error_at(legend, ch, f"a legend key is one printable character, found {ch!r}", on_key=True)
             if not isinstance(column, YList):
                 raise error_at(legend, ch, "a legend entry is a list of block names from y = 0 up, e.g. [stone, stone]")
             out[ch] = []
@@ -302,8 +309,8 @@ class _Builder:
             if not isinstance(entry, YMap):
                 raise error_at(entries, i, f"{article} {what} is {{{shape}}}")
             check_keys(entry, {"name", *fields}, {"name", *required}, f"{article} {what}")
-            name = entry["name"]
-            if not isinstance(name, str) or name in dungeon.objects:
+            name = check_name(entry, "name", entry["name"], f"{article} {what}'s name")
+            if name in dungeon.objects:
                 raise error_at(entry, "name", f"{what} name {name!r} must be a new name")
             values = {a: adef.default for a, adef in cls.attrs.items()}
             for fkey, attrs in fields.items():

@@ -45,10 +45,17 @@ class Emitter:
         self.ns: dict = {"SG": layout.static_grid, "ModelError": ModelError}
         self.tables: dict = {}
         self.tmp = itertools.count()
+        self.locals: dict = {}  # IR local name -> generated identifier (input text never becomes code)
         self.area = layout.width * layout.depth
         self._install_helpers()
 
     # ---- namespace ---------------------------------------------------------------------
+    def local(self, name: str) -> str:
+        """The generated identifier of an IR local: `v<number>`, never the name from the file."""
+        if name not in self.locals:
+            self.locals[name] = f"v{len(self.locals)}"
+        return self.locals[name]
+
     def table(self, values: tuple) -> str:
         if values not in self.tables:
             name = f"T{len(self.tables)}"
@@ -128,7 +135,7 @@ class Emitter:
         if isinstance(node, ir.Const):
             return repr(bool(node.value)) if node.type == "bool" else str(int(node.value))
         if isinstance(node, ir.Local):
-            return f"v_{node.name}"
+            return self.local(node.name)
         if isinstance(node, ir.Var):
             slot = self.L.by_var.get(node.var)
             if slot is None:
@@ -157,7 +164,7 @@ class Emitter:
         if isinstance(node, ir.Not):
             return f"(not {self.ex(node.operand)})"
         if isinstance(node, ir.CellLoop):
-            x, y, z = (f"v_{n}" for n in node.names)
+            x, y, z = (self.local(n) for n in node.names)
             fn = "any" if node.kind == "exists" else "all"
             L = self.L
             return (f"{fn}({self.ex(node.body)} for {y} in range({L.height}) "
@@ -263,7 +270,7 @@ class Emitter:
                 loc, value = defs[name]
                 yield from need(ir.locals_of(value))
                 done.add(name)
-                yield "let", f"v_{loc.name} = {self.ex(value)}"
+                yield "let", f"{self.local(loc.name)} = {self.ex(value)}"
 
         for cond in a.pre:
             yield from need(ir.locals_of(cond))
@@ -274,7 +281,7 @@ class Emitter:
         lines = ["def successors(s):", "    out = []"]
         for i in search:
             a = actions[i]
-            lines.append(f"    # {a.name}")
+            lines.append(f"    # action {i}")  # a number, never the name: comments carry no input text
             indent = "    "
             for kind, text in self.action_parts(a):
                 if kind == "let":

@@ -67,7 +67,7 @@ class Predicates:
         self._count += 1
         name = f"task_{self._count}"
         ns = dict(self._emitter.ns)
-        exec(compile(self._emitter.predicate_source(name, node), f"<task {text}>", "exec"), ns)
+        exec(compile(self._emitter.predicate_source(name, node), "<bcc task>", "exec"), ns)
         fn = ns[name]
         fn.ir = node
         return fn
