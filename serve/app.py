@@ -2,7 +2,8 @@
 
 Handlers are plain `def`s, so FastAPI runs them in its thread pool: a compile for
 drawing never blocks the event loop. Solves never run here: they are jobs
-(`jobs.py`), each in its own process.
+(`jobs.py`), each in its own process. Posted text is never compiled here either: it is
+checked in a throwaway process and drawn or stepped in the model host (`model_host.py`).
 """
 from __future__ import annotations
 
@@ -12,15 +13,18 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse
 from fastapi.staticfiles import StaticFiles
 
 from .. import __version__
-from ..errors import BccError, ModelError
+from ..errors import BccError, ModelError, printable
 from .body_limit import BodyLimit
-from .compiled import CompileRejected, CompiledCache
+from .compiled import CompileRejected, CompiledCache, trusted
+from .model_host import ModelHost
 from .jobs import JobManager, QueueFull
 from .posted import parse_ref, public_error
+from .stepping import demonstration_body, replay_body
 from .schemas import (DemonstrationRequest, DungeonFile, DungeonList, DungeonRequest, ErrorBody, JobCreated,
                       JobStatus, ReplayRequest, ReplayResponse, SolveRequest)
 
@@ -53,6 +57,7 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
         await asyncio.to_thread(sandbox.warm_up)  # start the fork server before the first job
         yield
         jobs.shutdown()
+        host.shutdown()
 
     # No /docs or /redoc: FastAPI's pages for them load scripts from a CDN, and the
     # viewer must work offline. The description itself is at /openapi.json.
@@ -60,6 +65,17 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
                   description="Compile and solve bcc dungeons over HTTP; a viewer at `/`.")
     app.state.jobs, app.state.settings = jobs, settings
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+
+    @app.exception_handler(RequestValidationError)
+    def invalid_request(request: Request, exc: RequestValidationError):
+        """422 with the first problem in one line; the offending input is never echoed
+        (it may be huge, NaN or not encodable)."""
+        problems = exc.errors()
+        first = problems[0] if problems else {"loc": (), "msg": "invalid request"}
+        where = ".".join(str(p) for p in first.get("loc", ()) if p != "body")
+        message = printable(str(first.get("msg", "invalid request")))[:300]
+        return error(422, {"error": f"{where}: {message}" if where else message,
+                           "line": None, "column": None, "file": None})
 
     @app.exception_handler(BccError)
     def bad_input(request: Request, exc: BccError):
@@ -73,8 +89,24 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
     def domain_error(request: Request, exc: ModelError):
         return error(400, {"error": f"domain error: {exc}", "line": None, "column": None, "file": None})
 
-    def model_for(req: DungeonRequest):
-        return compiled.model(parse_ref(req.dungeon), req.goal)
+    host = ModelHost(settings.job_memory_mb, settings.compile_seconds)
+
+    def stepped(req: DungeonRequest, task: str, extra: dict):
+        """Run a stepping task: a shipped dungeon here, posted text only in the model host."""
+        ref = parse_ref(req.dungeon)
+        if trusted(ref, req.goal):
+            model, rooms = compiled.model(ref, req.goal)
+            if task == "replay":
+                return replay_body(model, rooms, extra["actions"], extra["include_scene"])
+            return demonstration_body(model, False, extra["actions"], extra["command"])
+        compiled.report(ref, req.goal)  # checked (and rejected) once, in a throwaway process
+        outcome = host.call(task, {"ref": {"name": ref.name, "text": ref.text}, "goal": req.goal, **extra})
+        if outcome.kind == "ok":
+            return outcome.payload
+        if outcome.kind == "bad_input":
+            return error(400, outcome.payload)
+        return error(422, {"error": f"stepping the dungeon failed: {outcome.payload}",
+                           "line": None, "column": None, "file": None})
 
     # ---- the page ---------------------------------------------------------------
     @app.get("/", include_in_schema=False)
@@ -112,24 +144,12 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
     @app.post("/replay", response_model=ReplayResponse, responses=ERRORS,
               summary="Run actions from the start: one frame per state, stopping where an action does not apply")
     def replay(req: ReplayRequest):
-        from ..simulate import replay as run
-        from .scene import replay_frames, scene
-        model, rooms = model_for(req)
-        result = run(model, [(a, 1, k) for k, a in enumerate(req.actions, 1)], "actions")
-        out = replay_frames(model, result)
-        out["scene"] = scene(model, rooms) if req.include_scene else None
-        return out
+        return stepped(req, "replay", {"actions": list(req.actions), "include_scene": req.include_scene})
 
     @app.post("/demonstration", responses=ERRORS,
               summary="A demonstration file (bcc-demonstration/1) of actions played from the start")
     def demonstration(req: DemonstrationRequest):
-        from ..grounding.demonstration import from_actions
-        model, _ = model_for(req)
-        ref = parse_ref(req.dungeon)
-        demo = from_actions(model, req.actions, command=req.command, path="actions")
-        if ref.name is None:  # posted text has no path the file could name: save it as NAME.yaml beside it
-            demo.dungeon = f"{model.name}.yaml"
-        return demo.to_json()
+        return stepped(req, "demonstration", {"actions": list(req.actions), "command": req.command})
 
     # ---- jobs -------------------------------------------------------------------
     @app.post("/solve", status_code=202, response_model=JobCreated, responses={**ERRORS, 503: {"model": ErrorBody}},

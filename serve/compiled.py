@@ -1,10 +1,11 @@
 """Compiled models kept in the server process, for drawing and stepping (not for solving).
 
 Shipped dungeons are trusted and compiled here directly. Posted text (a dungeon, or a
-goal replacing a shipped dungeon's) is first compiled in a job process under the memory
-and time limits (`sandbox.run("compile")`); only text that compiled there is compiled
-here too, so a hostile dungeon can exhaust a throwaway process but never the server. Both checks and models are cached by the
-dungeon (name or text hash) and goal, least recently used first out.
+goal replacing a shipped dungeon's) is compiled only in a job process under the memory
+and time limits (`sandbox.run("compile")`), which answers its report; drawing and
+stepping it happen in the model host (`model_host.py`), never here, so a hostile
+dungeon can exhaust a throwaway process but never the server. Reports and models are
+cached by the dungeon (name or text hash) and goal, least recently used first out.
 """
 from __future__ import annotations
 
@@ -83,9 +84,10 @@ class CompiledCache:
         raise CompileRejected(body, 400 if kind == "bad_input" else 422)
 
     def model(self, ref: DungeonRef, goal: str | None):
-        """(Model, rooms) for drawing; what is not trusted must pass `report` first."""
+        """(Model, rooms) of a shipped dungeon, for drawing. Posted text is never compiled
+        in the server's process (`model_host.py` holds those models)."""
         if not trusted(ref, goal):
-            self.report(ref, goal)
+            raise RuntimeError("posted text is compiled only in the model host")
         key = (ref.key, goal)
         with self._lock:
             cached = self._models.get_fresh(key)

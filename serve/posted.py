@@ -27,7 +27,7 @@ import yaml
 from ..compiler.domain import DOMAINS_DIR
 from ..compiler.dungeon import DUNGEONS_DIR, shipped_dungeons
 from ..compiler.source import error_at, load_yaml_text, suggest
-from ..errors import BccError
+from ..errors import CONTROL, BccError
 
 POSTED_NAME = "posted.yaml"
 POSTED_LABEL = "<posted>"
@@ -58,7 +58,8 @@ def parse_ref(value: str) -> DungeonRef:
         return DungeonRef(name=value)
     if "\n" in value or ":" in value:
         return DungeonRef(text=value)
-    raise BccError(f"no shipped dungeon named {value!r}{suggest(value, shipped_dungeons())}; "
+    shown = repr(value) if len(value) <= 60 else repr(value[:57]) + "..."
+    raise BccError(f"no shipped dungeon named {shown}{suggest(value[:100], shipped_dungeons())}; "
                    f"post a shipped name or the YAML text of a dungeon "
                    f"(shipped: {', '.join(shipped_dungeons())})")
 
@@ -66,13 +67,18 @@ def parse_ref(value: str) -> DungeonRef:
 def check_policy(text: str) -> None:
     """Reject what a posted dungeon may not do before the compiler sees it: YAML aliases
     (a few bytes of them expand exponentially) and references other than shipped names."""
+    bad = CONTROL.search(text.replace("\r", ""))
+    if bad is not None:  # NUL, escapes, lone surrogates (which cannot even be written to a file)
+        line = text.count("\n", 0, bad.start()) + 1
+        col = bad.start() - (text.rfind("\n", 0, bad.start()) + 1) + 1
+        raise BccError(f"the control character {bad.group()!r} is not accepted in a dungeon", POSTED_LABEL, line, col)
     try:
         for event in yaml.parse(text, Loader=yaml.SafeLoader):
             if isinstance(event, yaml.AliasEvent):
                 m = event.start_mark
                 raise BccError("YAML aliases (*name) are not accepted in a posted dungeon",
                                POSTED_LABEL, m.line + 1, m.column + 1)
-    except yaml.MarkedYAMLError:
+    except yaml.YAMLError:
         pass  # the loader below reports it with its position
     data = load_yaml_text(text, POSTED_LABEL)
     for key, allowed, kind in (("extends", shipped_dungeons(), "dungeon"), ("domain", shipped_domains(), "domain")):

@@ -3,13 +3,33 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, Field
+import re
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+SURROGATE = re.compile("[\ud800-\udfff]")
 
 DUNGEON_HELP = ("A shipped dungeon's name (see GET /dungeons), or the YAML text of a dungeon. "
                 "Posted text may `extends:` shipped dungeons and name shipped domains only.")
 
 
-class DungeonRequest(BaseModel):
+class Strict(BaseModel):
+    """Every body: numbers are finite (NaN would break the JSON of any answer) and text
+    holds no lone surrogates (they cannot be written, logged or sent back as UTF-8)."""
+    model_config = ConfigDict(allow_inf_nan=False)
+
+    @model_validator(mode="after")
+    def _no_surrogates(self):
+        for name, value in self:
+            if name == "dungeon":  # posted text: refused with its line and column (`posted.check_policy`)
+                continue
+            for text in (value if isinstance(value, list) else [value]):
+                if isinstance(text, str) and SURROGATE.search(text):
+                    raise ValueError(f"`{name}` holds a lone surrogate (text must be valid Unicode)")
+        return self
+
+
+class DungeonRequest(Strict):
     dungeon: str = Field(description=DUNGEON_HELP, examples=["bridge"])
     goal: str | None = Field(None, description="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)'.")
 

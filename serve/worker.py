@@ -65,6 +65,63 @@ def solve_task(spec: dict, rss_ceiling: float) -> dict:
 TASKS = {"compile": compile_task, "solve": solve_task}
 
 
+def host_main(conn, memory_mb: float, cache_size: int) -> None:
+    """Entry point of the model host (`model_host.py`): answer `(task, spec)` requests on
+    `conn` with `(kind, payload)`, keeping up to `cache_size` compiled models. A
+    MemoryError ends the process after its answer (its heap may be half-built)."""
+    from collections import OrderedDict
+    from .scene import rooms_of
+    from .stepping import demonstration_body, replay_body
+    try:
+        os.nice(5)
+    except OSError:
+        pass
+    limit_memory(memory_mb)
+    models: OrderedDict = OrderedDict()
+
+    def model_of(spec):
+        ref = DungeonRef(**spec["ref"])
+        key = (ref.key, spec.get("goal"))
+        if key not in models:
+            models[key] = compile_ref(ref, spec.get("goal"), with_rooms=True)
+            while len(models) > cache_size:
+                models.popitem(last=False)
+        models.move_to_end(key)
+        return models[key]
+
+    while True:
+        try:
+            task, spec = conn.recv()
+        except (EOFError, OSError):
+            return
+        fatal = False
+        try:
+            model, rooms = model_of(spec)
+            if task == "replay":
+                payload = replay_body(model, rooms, spec["actions"], spec.get("include_scene", True))
+            elif task == "demonstration":
+                payload = demonstration_body(model, spec["ref"].get("name") is None, spec["actions"],
+                                             spec.get("command"))
+            else:
+                payload = dict(model.report, action_names=list(model.action_names))
+            message = ("ok", payload)
+        except MemoryError:
+            models.clear()
+            message, fatal = ("memory", f"the posted dungeon exceeded the memory limit of {memory_mb:g} MB"), True
+        except BccError as exc:
+            message = ("bad_input", public_error(exc))
+        except ModelError as exc:
+            message = ("bad_input", {"error": f"domain error: {exc}", "line": None, "column": None, "file": None})
+        except Exception as exc:  # noqa: BLE001 - a bug in bcc: this request fails, the server does not
+            message = ("failed", f"internal error: {type(exc).__name__}: {exc}")
+        try:
+            conn.send(message)
+        except (MemoryError, OSError):
+            return
+        if fatal:
+            return
+
+
 def main(conn, task: str, spec: dict, memory_mb: float) -> None:
     """Entry point of a job process: one message on `conn`, `(kind, payload)`.
 
