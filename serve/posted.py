@@ -44,7 +44,7 @@ class DungeonRef:
         """A cache key: the name, or a hash of the text."""
         if self.name is not None:
             return "name:" + self.name
-        return "text:" + hashlib.sha256(self.text.encode("utf-8")).hexdigest()
+        return "text:" + hashlib.sha256(self.text.encode("utf-8", "surrogatepass")).hexdigest()
 
 
 def shipped_domains() -> list[str]:
