@@ -147,54 +147,67 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
     from .solvers import Budget, LEARNING, get_solver, learning_options, optimal_cost
     from .solvers.heuristics import HEURISTICS
-    model = compile_model(dungeon, goal)
-    solve = get_solver(solver)
-    if output:
-        from .atomic import check_writable
-        check_writable(output)   # before a long solve, not after it
-    options = {}
-    if heuristic is not None:
-        if heuristic not in HEURISTICS and heuristic != "auto":
-            raise BccError(f"unknown heuristic {heuristic!r}; available: auto, {', '.join(HEURISTICS)}")
-        if solver == "bfs":
-            raise BccError("bfs uses no heuristic; drop --heuristic or pick an informed solver (astar, ...)")
-        options["heuristic"] = heuristic
-    if weight is not None:
-        if solver not in ("astar", "wastar"):
-            raise BccError("--weight applies to astar and wastar only")
-        options["weight"] = weight
-    if fd_search is not None:
-        if solver != "fd":
-            raise BccError("--fd-search applies to the fd solver only")
-        options["search"] = fd_search
-    learning = solver in LEARNING
-    options.update(learning_options(
-        solver, {"learner": learner, "delta": delta, "m": m, "episodes": episodes, "seed": seed, "gamma": gamma,
-                 "max_steps": max_steps}, LEARNING_FLAGS))
-    if learning:  # converged_episode compares with the optimal cost, found by A*
-        options["optimal_cost"] = optimal_cost(model)
+    from .solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
-    progress = progress_enabled()
-    result = solve(model, budget, progress=progress, **options)
-    if progress:
-        click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+    deadline = Deadline(budget)  # compiling, a reference search and the solve share one budget
+    model = None
+    try:
+        with hard_limits(budget):
+            model = compile_model(dungeon, goal)
+            solve = get_solver(solver)
+            if output:
+                from .atomic import check_writable
+                check_writable(output)   # before a long solve, not after it
+            options = {}
+            if heuristic is not None:
+                if heuristic not in HEURISTICS and heuristic != "auto":
+                    raise BccError(f"unknown heuristic {heuristic!r}; available: auto, {', '.join(HEURISTICS)}")
+                if solver == "bfs":
+                    raise BccError("bfs uses no heuristic; drop --heuristic or pick an informed solver (astar, ...)")
+                options["heuristic"] = heuristic
+            if weight is not None:
+                if solver not in ("astar", "wastar"):
+                    raise BccError("--weight applies to astar and wastar only")
+                options["weight"] = weight
+            if fd_search is not None:
+                if solver != "fd":
+                    raise BccError("--fd-search applies to the fd solver only")
+                options["search"] = fd_search
+            options.update(learning_options(
+                solver, {"learner": learner, "delta": delta, "m": m, "episodes": episodes, "seed": seed,
+                         "gamma": gamma, "max_steps": max_steps}, LEARNING_FLAGS))
+            progress = progress_enabled()
+            if solver in LEARNING:  # converged_episode compares with A*'s cost, found within half the budget
+                options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
+            result = solve(model, deadline.remaining(), progress=progress, **options)
+            if progress:
+                click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+    except BudgetExceeded as exc:  # ran out outside a solver's own checks (compiling, a heuristic's table, ...)
+        result = exceeded_result(solver, exc.which, deadline.elapsed())
     if output and result.solved:
         write_output(output, "".join(a + "\n" for a in result.plan))
+    if model is None:
+        _print_result(dungeon, dungeon, goal, result, as_json)
+    else:
+        _print_result(model.name, model.path, model.goal_text, result, as_json)
+    sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
+
+
+def _print_result(name: str, path, goal_text, result, as_json: bool) -> None:
     if as_json:
-        emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
+        emit_json({"dungeon": name, "goal": goal_text, **result.to_json()})
     elif result.solved:
         steps = f"{len(result.plan)} step" + ("" if len(result.plan) == 1 else "s")
-        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {steps}, "
+        click.echo(f"solved {name} with {result.solver}: cost {result.cost}, {steps}, "
                    f"{result.expanded:,} expanded, {result.seconds:.3f} s")
         for a in result.plan:
             click.echo(a)
     else:
         click.echo(f"not solved: {result.message} ({result.expanded:,} expanded, {result.seconds:.3f} s)")
-    if not result.solved:
-        click.echo(f"{model.path}: {result.message}", err=True)
-    sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
+    if not result.solved and path is not None:
+        click.echo(f"{path}: {result.message}", err=True)
 
 
 LEARNING_FLAGS = {"learner": "--model", "delta": "--delta", "m": "--known-after", "episodes": "--episodes",

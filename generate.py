@@ -30,6 +30,7 @@ from collections import deque
 
 import yaml
 
+from .compiler.names import name_problem
 from .errors import BccError
 
 MAX_SIZE = 255          # a coordinate is one byte of the packed state
@@ -82,8 +83,8 @@ def _validate(width, depth, stones, lava, loops, seed, name) -> None:
         raise BccError(f"stones and lava must not be negative, got stones={stones}, lava={lava}")
     if isinstance(loops, bool) or not isinstance(loops, (int, float)) or not 0.0 <= loops <= 1.0:
         raise BccError(f"loops must be a fraction between 0 and 1, got {loops!r}")
-    if name is not None and (not isinstance(name, str) or not name.strip() or "\n" in name):
-        raise BccError(f"name must be a non-empty single-line string, got {name!r}")
+    if name is not None and name_problem(name) is not None:
+        raise BccError(f"the name {name_problem(name)}")
     if lava > max_rivers(depth):
         raise BccError(f"lava={lava}: a maze {depth} deep has room for at most {max_rivers(depth)} "
                        f"non-adjacent lava rivers")

@@ -95,7 +95,7 @@ def learning_curves(dungeon: str, *, goal: str | None = None, learners: list[str
     model = _model(dungeon, goal)   # bad input fails here; the runs' children inherit it
     memory = Budget.default().max_memory_mb
     # the reference cost converged_episode compares with: A*, in this process
-    optimal_cost = astar_cost(model, max_memory_mb=memory)
+    optimal_cost = astar_cost(model, Budget(time_limit=time_limit or 60, max_memory_mb=memory))
     per_run = memory / max(workers, os.cpu_count() or 1)
     runs = [CurveRun(dungeon, goal, name, seed, episodes, optimal_cost, per_run, time_limit)
             for name in learners for seed in seeds]

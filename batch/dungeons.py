@@ -159,7 +159,7 @@ def open_dungeon(name: str):
         yield name
         return
     from ..generate import generate_maze
-    text = generate_maze(**parse_spec(name), name=name)
+    text = generate_maze(**parse_spec(name))  # named maze_WxD_...: a spec is not a valid dungeon name
     with tempfile.TemporaryDirectory(prefix="bcc-batch-") as tmp:
         path = Path(tmp) / "generated.yaml"
         path.write_text(text, encoding="utf-8")

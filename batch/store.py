@@ -60,6 +60,21 @@ def read_rows(path: str) -> Contents:
     return out
 
 
+def _end_of_last_line(path: str, size: int, block: int = 65536) -> int:
+    """The offset just past the file's last newline (0 if none): what stays when a torn
+    last line, however long, is cut off. Reads backwards a block at a time."""
+    with open(path, "rb") as f:
+        end = size
+        while end > 0:
+            start = max(end - block, 0)
+            f.seek(start)
+            newline = f.read(end - start).rfind(b"\n")
+            if newline >= 0:
+                return start + newline + 1
+            end = start
+    return 0
+
+
 class ResultsFile:
     """Appends rows to `path`; use as a context manager."""
 
@@ -87,19 +102,10 @@ class ResultsFile:
                 raise BccError("another `bcc batch` is writing this results file; wait for it, "
                                "or choose another --out", self.path) from None
             size = os.fstat(self.fd).st_size
-            cut = 0
-            if size:
-                with open(self.path, "rb") as f:
-                    f.seek(max(size - 65536, 0))
-                    chunk = f.read()
-                if not chunk.endswith(b"\n"):
-                    newline = chunk.rfind(b"\n")
-                    keep = size - len(chunk) + newline + 1 if newline >= 0 else (0 if size <= 65536 else None)
-                    if keep is None:  # one enormous unfinished line: end it, so the next row starts clean
-                        os.write(self.fd, b"\n")
-                    else:
-                        cut = size - keep
-                        os.truncate(self.path, keep)
+            keep = _end_of_last_line(self.path, size)
+            cut = size - keep
+            if cut:
+                os.truncate(self.path, keep)
             return cut
         except OSError as exc:
             raise BccError(f"cannot write results: {exc.strerror}", self.path) from None

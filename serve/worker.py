@@ -15,6 +15,7 @@ import resource
 from ..errors import BccError, ModelError
 from ..solvers import LEARNING, Budget, get_solver, optimal_cost
 from ..solvers.base import current_rss_mb
+from ..solvers.limits import Deadline
 from .posted import DungeonRef, compile_ref, public_error
 # Imported here so the fork server preloads them: a job never pays for these imports.
 from ..solvers import astar, bfs  # noqa: F401
@@ -54,11 +55,12 @@ def compile_task(spec: dict, rss_ceiling: float) -> dict:
 def solve_task(spec: dict, rss_ceiling: float) -> dict:
     model = load_model(spec)
     solve = get_solver(spec.get("solver", "astar"))
-    budget = Budget(max_states=spec.get("max_states"), time_limit=spec.get("time_limit"), max_memory_mb=rss_ceiling)
+    deadline = Deadline(Budget(max_states=spec.get("max_states"), time_limit=spec.get("time_limit"),
+                               max_memory_mb=rss_ceiling))
     options = dict(spec.get("options") or {})
-    if spec.get("solver") in LEARNING:  # converged_episode is measured against A*'s cost
-        options["optimal_cost"] = optimal_cost(model, time_limit=spec.get("time_limit") or 60, max_memory_mb=rss_ceiling)
-    result = solve(model, budget, **options)
+    if spec.get("solver") in LEARNING:  # converged_episode is measured against A*'s cost, in half the budget
+        options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
+    result = solve(model, deadline.remaining(), **options)
     return {"dungeon": model.name, "goal": model.goal_text, **result.to_json()}
 
 

@@ -44,11 +44,13 @@ def learning_options(solver: str, given: dict, spelled: dict) -> dict:
     return out
 
 
-def optimal_cost(model, time_limit: float = 60, max_memory_mb: float | None = None) -> int | None:
+def optimal_cost(model, budget: Budget | None = None) -> int | None:
     """A*'s cost, the yardstick of a learning solver's `converged_episode` (None when A*
-    finds no plan within the limits)."""
-    memory = max_memory_mb if max_memory_mb is not None else Budget.default().max_memory_mb
-    reference = get_solver("astar")(model, Budget(time_limit=time_limit, max_memory_mb=memory))
+    finds no plan within `budget`: by default 60 s and half the RAM). Callers pass a share
+    of the user's own budget, so the yardstick never outlives the command's limits."""
+    if budget is None:
+        budget = Budget(time_limit=60, max_memory_mb=Budget.default().max_memory_mb)
+    reference = get_solver("astar")(model, budget)
     return reference.cost if reference.solved else None
 
 

@@ -32,6 +32,12 @@ def current_rss_mb() -> float:
         return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
+def peak_rss_mb() -> float:
+    """The process's peak resident memory so far (Linux reports ru_maxrss in KiB): the
+    `peak_mb` of a result, which a sampled maximum would understate."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
 @dataclass(frozen=True)
 class Budget:
     """Limits of one run. max_states counts distinct states stored; None = no limit."""
@@ -100,7 +106,7 @@ class Meter:
 
     def finish(self, result: Result) -> Result:
         result.seconds = round(self.elapsed(), 6)
-        self.peak_mb = max(self.peak_mb, current_rss_mb())
+        self.peak_mb = max(self.peak_mb, current_rss_mb(), peak_rss_mb())
         result.peak_mb = round(self.peak_mb, 1)
         return result
 

@@ -257,6 +257,19 @@ def test_a_torn_last_line_is_dropped_and_its_run_redone(tmp_path):
     assert [r["key"] for r in rows] == [r.key for r in runs]
 
 
+def test_a_torn_last_line_longer_than_a_read_block_is_dropped_too(tmp_path):
+    runs = build_runs(["bridge", "grid"], [("astar", {}, {})], [0])
+    out = tmp_path / "r.jsonl"
+    run_batch(runs[:1], out=str(out), workers=1)
+    whole = out.read_bytes()
+    torn = b'{"key": "' + runs[1].key.encode() + b'", "message": "' + b"x" * 200_000  # cut short, 200 KB long
+    out.write_bytes(whole + torn)
+    summary = run_batch(runs, out=str(out), workers=1)
+    assert summary["torn_bytes_dropped"] == len(torn)
+    rows = rows_in(out)  # every line parses: the torn line is gone, not kept as a bad line
+    assert [r["key"] for r in rows] == [r.key for r in runs]
+
+
 def test_appends_are_whole_lines(tmp_path):
     out = tmp_path / "r.jsonl"
     with ResultsFile(str(out)) as f:

@@ -201,10 +201,11 @@ def test_name_and_description(tmp_path):
     assert data["dungeon"] == "maze_9x9_s1_l1_seed3"
     for word in ("seed 3", "9x9", "depth-first", "1 mineable stone", "1 lava river"):
         assert word in data["description"]
-    odd = "my maze: #1 'quoted'"
-    text = generate_maze(9, 9, seed=3, name=odd)
-    assert yaml.safe_load(text)["dungeon"] == odd
-    assert compile_dungeon(write(tmp_path, text)).report["dungeon"] == odd
+    text = generate_maze(9, 9, seed=3, name="my_maze_1")
+    assert yaml.safe_load(text)["dungeon"] == "my_maze_1"
+    assert compile_dungeon(write(tmp_path, text)).report["dungeon"] == "my_maze_1"
+    with pytest.raises(BccError, match="the name must be letters, digits and _"):
+        generate_maze(9, 9, seed=3, name="my maze: #1 'quoted'")  # the names rule of every dungeon
 
 
 @pytest.mark.parametrize("kwargs,words", [

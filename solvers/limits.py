@@ -1,0 +1,101 @@
+"""Budgets that hold for a whole command, not only inside a search loop.
+
+Solvers check their `Budget` cooperatively, every so many expansions. That misses work
+done outside the loop -- compiling, building a heuristic's table, a reference search, an
+expensive goal test between two checks. `hard_limits` backs the budget up for the whole
+command: the time limit becomes a timer (SIGALRM) that interrupts whatever runs once the
+limit is spent plus a small grace, and the memory budget becomes a cap on the address
+space (RLIMIT_AS), so an allocation past it fails at once with MemoryError instead of
+the machine swapping. Both end as `BudgetExceeded`, which commands report like any
+budget stop (exit 1). `Deadline` splits one command's time between its phases.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import resource
+import signal
+import threading
+import time
+
+from .base import BUDGET_WORDS, Budget, Result, current_rss_mb, peak_rss_mb
+
+GRACE_SECONDS = 0.5   # the cooperative check normally stops first; the timer only backs it up
+
+
+class BudgetExceeded(Exception):
+    """A budget ran out outside a solver's own checks; `which` names it like Result.budget."""
+
+    def __init__(self, which: str):
+        super().__init__(which)
+        self.which = which
+
+
+def _vm_bytes() -> int | None:
+    try:
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError):
+        return None
+
+
+@contextlib.contextmanager
+def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
+    """Enforce `budget`'s time and memory on everything run inside (main thread only;
+    elsewhere, or without /proc and rlimits, the solvers' own checks still apply)."""
+    timer = budget.time_limit is not None and threading.current_thread() is threading.main_thread()
+    if timer:
+        def expire(signum, frame):
+            raise BudgetExceeded("time_limit")
+        old_handler = signal.signal(signal.SIGALRM, expire)
+        signal.setitimer(signal.ITIMER_REAL, budget.time_limit + grace)
+    old_cap = None
+    vm = _vm_bytes()
+    if budget.max_memory_mb is not None and vm is not None:
+        # What the budget still allows this process to grow by, plus 5 % for the gap
+        # between address space and resident memory.
+        room = max(budget.max_memory_mb - current_rss_mb(), 0) * 1.05 + 16
+        cap = vm + int(room * 2**20)
+        try:
+            old_cap = resource.getrlimit(resource.RLIMIT_AS)
+            hard = old_cap[1]
+            resource.setrlimit(resource.RLIMIT_AS, (cap if hard == resource.RLIM_INFINITY else min(cap, hard), hard))
+        except (OSError, ValueError):
+            old_cap = None
+    try:
+        yield
+    except MemoryError:
+        raise BudgetExceeded("max_memory") from None
+    finally:
+        if timer:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old_handler)
+        if old_cap is not None:
+            with contextlib.suppress(OSError, ValueError):
+                resource.setrlimit(resource.RLIMIT_AS, old_cap)
+
+
+class Deadline:
+    """One command's budget, shared by its phases: each phase gets the time left."""
+
+    def __init__(self, budget: Budget):
+        self.budget = budget
+        self.start = time.perf_counter()
+
+    def elapsed(self) -> float:
+        return time.perf_counter() - self.start
+
+    def remaining(self, share: float = 1.0) -> Budget:
+        """The budget for the next phase: `share` of the time left (states and memory are
+        whole-process limits, so they pass unchanged)."""
+        b = self.budget
+        if b.time_limit is None:
+            return b
+        left = max(b.time_limit - self.elapsed(), 1e-3)
+        return Budget(max_states=b.max_states, time_limit=left * share, max_memory_mb=b.max_memory_mb)
+
+
+def exceeded_result(solver: str, which: str, seconds: float) -> Result:
+    """The result of a run stopped by `hard_limits` (its counters were lost with it)."""
+    return Result(solver=solver, solved=False, status="budget", budget=which, seconds=round(seconds, 6),
+                  peak_mb=round(peak_rss_mb(), 1), message=f"stopped: {BUDGET_WORDS[which]} ran out")
