@@ -1,0 +1,109 @@
+"""Every budget holds for the whole of `bcc solve`, whatever does the work.
+
+Before, the learning solvers' A* reference ran outside the user's limits (60 s and half
+the RAM of its own), heuristic tables were built outside them, and a goal test costly
+enough to make 1,024 expansions take a minute ran a minute past `--time-limit`. Each
+case runs the real executable and checks the wall clock against the limit plus the
+start-up of a trivial solve (the budget starts once bcc runs) plus one second, and the
+memory the kernel saw against the budget plus 10 %.
+"""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from bcc.generate import generate_maze
+
+
+def run(*args: str, timeout: float = 120) -> tuple[int, dict | None, float, float]:
+    """(exit code, JSON output, wall seconds, peak resident MB as the kernel saw it)."""
+    import tempfile
+    start = time.perf_counter()
+    with tempfile.TemporaryFile() as err:
+        proc = subprocess.Popen([sys.executable, "-m", "bcc", *args], stdout=subprocess.PIPE, stderr=err)
+        timer = __import__("threading").Timer(timeout, proc.kill)
+        timer.start()
+        out = proc.stdout.read()
+        _, status, usage = os.wait4(proc.pid, 0)  # reaped here, so its own peak is ours to read
+        timer.cancel()
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        wall = time.perf_counter() - start
+        err.seek(0)
+        message = err.read().decode(errors="replace")
+    assert proc.returncode in (0, 1), message[-2000:]
+    data = json.loads(out) if out.strip().startswith(b"{") else None
+    return proc.returncode, data, wall, usage.ru_maxrss / 1024
+
+
+@pytest.fixture(scope="module")
+def startup() -> float:
+    """Wall time of a trivial solve: interpreter, imports, compiling a small dungeon."""
+    return min(run("solve", "grid", "--json")[2] for _ in range(2))
+
+
+@pytest.fixture(scope="module")
+def big_maze(tmp_path_factory) -> str:
+    path = tmp_path_factory.mktemp("mazes") / "big.yaml"
+    path.write_text(generate_maze(81, 81, stones=12, seed=1))
+    return str(path)
+
+
+@pytest.mark.parametrize("solver", ["qlearning", "rmax"])
+def test_learning_solvers_and_their_reference_search_share_the_time_limit(solver, big_maze, startup):
+    code, data, wall, _ = run("solve", big_maze, "--solver", solver, "--time-limit", "2", "--max-memory", "1000",
+                              "--json")
+    assert wall <= startup + 2 + 1.5, f"{solver}: {wall:.1f} s for --time-limit 2"
+    if not data["solved"]:
+        assert data["status"] == "budget" and data["budget"] in ("time_limit", "max_memory")
+
+
+def test_building_the_pattern_database_stops_at_the_time_limit(big_maze, startup):
+    code, data, wall, _ = run("solve", big_maze, "--heuristic", "pdb", "--time-limit", "1", "--json")
+    assert wall <= startup + 1 + 1.5
+    assert code == 1 and data["budget"] == "time_limit"
+
+
+def test_an_expensive_goal_test_stops_at_the_time_limit(startup):
+    # Two nested quantifiers over every cell: 1,024 expansions take far longer than the limit.
+    goal = ("exists b in block . exists c in block . blockIsType(b, gold) and blockIsType(c, gold) "
+            "and agentOnBlock(agent, b) and b.x == c.x + 100")
+    code, data, wall, _ = run("solve", "tough_maze", "--time-limit", "1", "--goal", goal, "--json")
+    assert wall <= startup + 1 + 1.5
+    assert code == 1 and data["budget"] == "time_limit"
+
+
+def test_memory_budget_caps_what_the_process_allocates(tmp_path):
+    """A memory budget smaller than what the search needs ends as a budget stop, and the
+    process never holds much more than the budget (an allocation past it fails at once)."""
+    path = tmp_path / "big.yaml"
+    path.write_text(generate_maze(65, 65, stones=10, seed=1))
+    code, data, wall, peak = run("solve", str(path), "--solver", "bfs", "--max-memory", "120", "--json")
+    assert code == 1 and data["status"] == "budget" and data["budget"] == "max_memory"
+    assert data["peak_mb"] <= 120 * 1.1 + 5 and peak <= 120 * 1.1 + 5
+
+
+def test_peak_mb_is_the_process_peak():
+    code, data, _, peak = run("solve", "tough_maze", "--solver", "bfs", "--json")
+    assert code == 0 and data["peak_mb"] >= 0.95 * peak
+
+
+@pytest.mark.slow
+def test_a_killed_solve_leaves_no_temporary_file(tmp_path):
+    """`-o` checks the output's folder before the solve; SIGKILL at any moment leaves
+    no temporary file beside the output (before, a kill between creating and deleting
+    the probe left an empty one)."""
+    out = tmp_path / "plans" / "plan.txt"
+    out.parent.mkdir()
+    for delay in (0.05, 0.2, 0.4, 0.8, 1.2):
+        proc = subprocess.Popen([sys.executable, "-m", "bcc", "solve", "tough_maze", "--solver", "bfs", "-o", str(out)],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        time.sleep(delay)
+        proc.send_signal(signal.SIGKILL)
+        proc.wait()
+        assert [p.name for p in out.parent.iterdir() if p.name != "plan.txt"] == []
