@@ -49,8 +49,13 @@ def emit_json(data) -> None:
 
 
 def compile_model(dungeon: str, goal: str | None):
+    """Compile what the user named; its warnings (e.g. an unused legend character) go to
+    stderr, one `file:line:col: warning: ...` line each."""
     from .compiler import compile_dungeon
-    return compile_dungeon(dungeon, goal=goal)
+    model = compile_dungeon(dungeon, goal=goal)
+    for warning in model.report.get("warnings", ()):
+        click.echo(warning, err=True)
+    return model
 
 
 def write_output(path: str, text: str) -> None:

@@ -96,6 +96,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         "state_bytes": layout.size,
         "goal": goal_src.text,
         "goal_positions": None if goal_positions is None else len(goal_positions),
+        "warnings": [str(w) for w in dungeon.warnings],
     }
     return Model(
         name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,

@@ -42,6 +42,7 @@ class Dungeon:
     where: dict = field(default_factory=dict)
     legend_columns: dict = field(default_factory=dict)  # map character -> column of value indices
     start_char: str | None = None
+    warnings: list = field(default_factory=list)   # BccErrors that do not stop loading (`file:line:col: warning: ...`)
 
     @property
     def sizes(self) -> dict[str, int]:
@@ -153,6 +154,7 @@ class _Builder:
                           str(data.get("description", "")).strip(), d, width, depth, height,
                           gclass.name, grid, {})
         dungeon.legend_columns = legend
+        self.unused_legend(dungeon, rows)
         self.agent(dungeon, rows, legend, map_origin)
         self.inventory(dungeon)
         self.rooms(dungeon)
@@ -176,6 +178,17 @@ class _Builder:
                     raise error_at(column, i, f"unknown block type {name!r}{suggest(str(name), self.venum.values)}")
                 out[ch].append(self.venum.index(name))
         return out
+
+    def unused_legend(self, dungeon: Dungeon, rows) -> None:
+        """A legend character the map never uses is allowed (a base dungeon's legend may
+        serve its variants) but usually a typo in the map: say so, as a warning."""
+        used = {ch for row in rows for ch in row}
+        legend = self.data["legend"]
+        for ch in legend:
+            if ch not in used:
+                where = error_at(legend, ch, f"warning: the legend character {ch!r} is never used in the map",
+                                 on_key=True)
+                dungeon.warnings.append(where)
 
     def rows(self, legend):
         text = self.data["map"]
@@ -226,6 +239,12 @@ class _Builder:
                 raise error_at(agent, "start", f"the start {list(pos)} is outside the dungeon ({dungeon.width}x{dungeon.height}x{dungeon.depth})")
             values[axis] = value
             dungeon.where[(dungeon.agent_name, axis)] = (agent, "start")
+        x, y, z = pos
+        inside = int(dungeon.grid[y, z, x])
+        if inside != self.default_index:  # the agent's own cell must be empty (it would start stuck)
+            raise error_at(agent, "start", f"the agent would start inside a block ({self.venum.values[inside]}) "
+                                           f"at {list(pos)}; start it on top of a column (a map character) or "
+                                           f"in an empty cell")
         fields = self.binding.get("agent_fields") or {}
         for key in FACINGS_KEYS:
             if key not in agent:

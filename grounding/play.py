@@ -2,7 +2,8 @@
 
 On a terminal keys are read raw (no Enter needed); from a pipe or a test, each line is a
 string of keys. The map is redrawn after every key with `bcc.render`. `q` (or the end of
-input) stops; death stops too. Inapplicable keys are reported and change nothing.
+input) stops; after a death the session waits for `q`. Inapplicable keys are reported
+and change nothing. The keys are `keys.py`'s, the same as the web page's.
 """
 from __future__ import annotations
 
@@ -10,24 +11,9 @@ import os
 import sys
 from collections.abc import Callable, Iterator
 
+from ..keys import QUIT, key_map
 from ..model import Model
 from ..render import facing_name, render
-
-KEYS = {"move_forward": "w", "rotate_left": "a", "rotate_right": "d", "look_down": "j", "look_ahead": "k",
-        "change_item": "c", "destroy_block": "x", "place_block": "p"}
-QUIT = "q"
-
-
-def key_map(model: Model) -> dict[str, int]:
-    """key -> action index: the canonical actions by their usual keys, any other action by a digit."""
-    out, spare = {}, iter("123456789")
-    for i, name in enumerate(model.action_names):
-        key = KEYS.get(name.split("(")[0])
-        if key is None or key in out:
-            key = next(spare)
-        out[key] = i
-    return out
-
 
 def tty_keys() -> Iterator[str]:
     """Single key presses from a terminal in raw mode (restored on exit)."""
@@ -55,23 +41,32 @@ def line_keys(stream) -> Iterator[str]:
 
 
 def status(model: Model, state: bytes) -> str:
+    """Where the agent is and what it holds: the item in its hand (the selected slot),
+    then the rest of the inventory."""
     v = model.decode(state)
     x, y, z = model.agent_position(state)
-    held = [f"{v[k]} x{v[k.replace('blockType', 'count')]}" for k in v
-            if k.endswith(".blockType") and k.replace("blockType", "count") in v and v[k.replace('blockType', 'count')]]
     look = {0: "ahead", 1: "down"}.get(v.get("agent.verticalDirection"), "")
     parts = [f"at ({x}, {y}, {z})", f"facing {facing_name(model, state) or '?'}"]
     if look:
         parts.append(f"looking {look}")
+    slots = {k[:-len(".blockType")]: (v[k], v[k[:-len("blockType")] + "count"]) for k in v
+             if k.endswith(".blockType") and k[:-len("blockType")] + "count" in v}
+    text = ", ".join(parts)
     if "agent.selectedItem" in v:
-        parts.append(f"slot {v['agent.selectedItem']}")
-    return ", ".join(parts) + (f"; holding {', '.join(held)}" if held else "")
+        hand = next((item for key, item in slots.items() if key.endswith(f"[{v['agent.selectedItem']}]")), None)
+        held = f"{hand[0]} x{hand[1]}" if hand and hand[1] else "nothing"
+        text += f"; slot {v['agent.selectedItem']} in hand: {held}"
+        rest = [f"{item} x{count}" for key, (item, count) in slots.items()
+                if count and not key.endswith(f"[{v['agent.selectedItem']}]")]
+        if rest:
+            text += f"; also carrying {', '.join(rest)}"
+    return text
 
 
 def play(model: Model, keys: Iterator[str], out: Callable[[str], None], clear: bool = False,
          start: bytes | None = None) -> list[bytes]:
     """Run a session; return the visited states (the start first)."""
-    bindings = key_map(model)
+    bindings = key_map(model.action_names)
     legend = "  ".join(f"{k}={model.action_names[i]}" for k, i in bindings.items()) + f"  {QUIT}=quit"
     state = model.initial if start is None else start
     states = [state]
@@ -98,8 +93,15 @@ def play(model: Model, keys: Iterator[str], out: Callable[[str], None], clear: b
             states.append(state)
             note = model.action_names[i] + (" -- goal reached" if model.is_goal(state) else "")
         if model.is_failure(state):
-            note = f"{model.action_names[i]} -- you died"
+            # The episode is over, but the session waits for `q`: on a terminal, keys
+            # typed after a sudden exit would go to the shell.
+            note = f"{model.action_names[i]} -- you died. Press {QUIT} to quit."
             draw()
+            for key in keys:
+                if key == QUIT:
+                    break
+                note = f"you died; no more moves. Press {QUIT} to quit."
+                draw()
             break
         draw()
     return states

@@ -9,6 +9,7 @@ start, so a long plan stays small on the wire.
 from __future__ import annotations
 
 from ..compiler.dungeon import Dungeon
+from ..keys import key_map
 from ..model import Model
 from ..render import facing_name
 from ..simulate import Replay
@@ -44,6 +45,7 @@ def scene(model: Model, rooms: list[dict]) -> dict:
         "rooms": rooms,
         "objects": [{"name": n, "x": x, "z": z} for n, x, z in model.display.get("objects", [])],
         "actions": list(model.action_names),
+        "keys": {key: model.action_names[i] for key, i in key_map(model.action_names).items()},
     }
 
 

@@ -207,12 +207,29 @@ def test_learn_rejects_a_demonstration_that_achieves_nothing(tmp_path):
 
 def test_play_records_a_demonstration(tmp_path):
     rec = tmp_path / "demo.json"
-    # a, a: turn round; w: step south; j: look down; x: mine the stone; then an unknown key and quit
-    r = run("play", "bridge", "--record", str(rec), "--command", "get a stone", input="aa\nwjx\n?\nq\n")
+    # a, a: turn round; w: step south; s: look down; x: mine the stone; then an unknown key and quit
+    r = run("play", "bridge", "--record", str(rec), "--command", "get a stone", input="aa\nwsx\n?\nq\n")
     assert r.exit_code == 0, r.output
-    assert "w=move_forward" in r.output and "holding" in r.output
+    assert "w=move_forward" in r.output and "s=look_down" in r.output
+    # the item in hand is the selected slot's; the mined stone is carried, not held
+    assert "slot 0 in hand: diamond_pickaxe x1; also carrying burlap_stone x1" in r.output
     demo = Demonstration.load(rec)
     assert demo.actions == ["rotate_left", "rotate_left", "move_forward", "look_down", "destroy_block"]
     assert demo.command == "get a stone"
     r = run("learn", "bridge", "get a stone", "--demo", str(rec), "--db", str(tmp_path / "d.sqlite"), "--json")
     assert json.loads(r.output)["task"] == "agentHasBlock(agent, burlap_stone)"
+
+
+def test_after_dying_play_waits_for_q_and_ignores_other_keys():
+    """Stepping into lava ends the episode, but the session only ends at `q`: on a
+    terminal, keys typed after a sudden exit would go to the shell."""
+    from bcc.compiler import compile_dungeon
+    from bcc.grounding.play import play
+    model = compile_dungeon("bridge")
+    # bridge: the agent starts at (1, 3) facing north; d, d turn it east... (3, 3) is lava:
+    # turn right (east), step, step into the lava.
+    frames = []
+    states = play(model, iter("dwwwwaq"), frames.append)
+    assert model.is_failure(states[-1])
+    assert "you died" in frames[-1] and "Press q to quit" in frames[-1]
+    assert len(states) == 3 + 1  # the start and three moves: the keys after death changed nothing

@@ -4,14 +4,22 @@
 import { AGENT_COLOR, blockColor, draw, topBlocks } from "./draw.js";
 
 const $ = (id) => document.getElementById(id);
-const KEYS = {
-  ArrowUp: "move_forward", w: "move_forward",
-  ArrowLeft: "rotate_left", a: "rotate_left",
-  ArrowRight: "rotate_right", d: "rotate_right",
-  ArrowDown: "look_down", s: "look_down",
-  PageUp: "look_ahead", e: "look_ahead",
-  c: "change_item", x: "destroy_block", p: "place_block",
+// Letter keys come with each scene (`scene.keys`, the same table as `bcc play`); the
+// arrow keys are this page's aliases for moving, turning and looking.
+const ARROWS = {
+  ArrowUp: "move_forward", ArrowLeft: "rotate_left", ArrowRight: "rotate_right",
+  ArrowDown: "look_down", PageUp: "look_ahead",
 };
+
+function actionForKey(key) {
+  const keys = (view.scene && view.scene.keys) || {};
+  return keys[key] || keys[key.toLowerCase?.()] || ARROWS[key];
+}
+
+function keyOf(action) {
+  const keys = (view.scene && view.scene.keys) || {};
+  return Object.keys(keys).find((k) => keys[k] === action);
+}
 
 const view = {
   shipped: {},          // name -> YAML text of shipped dungeons
@@ -42,7 +50,11 @@ async function api(method, path, body) {
   return data;
 }
 
-function setStatus(text) { $("status").textContent = text; }
+// kind: "ok" (default), "bad" (a failure: drawn in the error colour) or "busy".
+function setStatus(text, kind = "ok") {
+  $("status").textContent = text;
+  $("status").dataset.kind = kind;
+}
 
 function showError(err) {
   const box = $("error");
@@ -164,7 +176,7 @@ async function replay(actions) {
 async function drawDungeon() {
   stopAnimation();
   showError(null);
-  setStatus("compiling…");
+  setStatus("compiling…", "busy");
   try {
     await replay([]);
     view.step = 0;
@@ -174,12 +186,34 @@ async function drawDungeon() {
       ["size", `${view.scene.width} × ${view.scene.depth} × ${view.scene.height}`]]);
     render();
     showLegend();
+    syncDungeonSelect();
     setStatus(`${view.scene.dungeon}: drawn`);
     setupActionButtons();
   } catch (err) {
     showError(err);
-    setStatus("error");
+    setStatus("error", "bad");
   }
+}
+
+// The dropdown names what is drawn: a shipped dungeon whose text is unchanged, or
+// "your dungeon" for pasted, uploaded or edited text.
+function syncDungeonSelect() {
+  const select = $("dungeon-select");
+  const text = $("yaml").value;
+  const shipped = Object.keys(view.shipped).find((n) => view.shipped[n] === text);
+  let own = select.querySelector("option[data-own]");
+  if (shipped) {
+    if (own) own.remove();
+    select.value = shipped;
+    return;
+  }
+  if (!own) {
+    own = new Option(`your dungeon — ${view.scene.dungeon}`, "");
+    own.dataset.own = "1";
+    select.prepend(own);
+  }
+  own.textContent = `your dungeon — ${view.scene.dungeon}`;
+  select.value = "";
 }
 
 // ---- solving ---------------------------------------------------------------------
@@ -198,7 +232,7 @@ async function solve() {
     let job;
     for (;;) {
       job = await api("GET", `/jobs/${id}`);
-      setStatus(`job ${id}: ${job.status}`);
+      setStatus(`job ${id}: ${job.status}`, "busy");
       if (["done", "failed", "cancelled"].includes(job.status)) break;
       await new Promise((r) => setTimeout(r, 200));
     }
@@ -214,11 +248,12 @@ async function solve() {
     showPlan(r.plan);
     view.step = 0;
     render();
-    setStatus(r.solved ? `solved: ${r.plan.length} steps, cost ${r.cost}` : `not solved: ${r.message}`);
+    setStatus(r.solved ? `solved: ${r.plan.length} steps, cost ${r.cost}` : `not solved: ${r.message}`,
+      r.solved ? "ok" : "bad");
     if (r.solved) animate();
   } catch (err) {
     showError(err);
-    setStatus("solve failed");
+    setStatus("solve failed", "bad");
   } finally {
     view.job = null;
     $("cancel-btn").disabled = true;
@@ -244,7 +279,8 @@ function setPlaying(on) {
 function setupActionButtons() {
   $("action-buttons").replaceChildren(...view.scene.actions.map((name, i) => {
     const b = document.createElement("button");
-    b.textContent = `${i + 1} ${name}`;
+    const key = keyOf(name);
+    b.textContent = key ? `${key.toUpperCase()} ${name}` : name;
     b.dataset.action = name;
     b.addEventListener("click", () => queue(async () => { if (!view.playing) await startPlaying(); await act(name); }));
     return b;
@@ -272,7 +308,7 @@ async function act(name) {
     render();
     if (data.steps < tried.length) setStatus(data.message);
     else if (data.reached_goal) setStatus(`goal reached in ${data.steps} steps (cost ${data.cost})`);
-    else if (view.frames[view.step].failure) setStatus(data.message);
+    else if (view.frames[view.step].failure) setStatus(data.message, "bad");
     else setStatus(`${name}: ok (${data.steps} steps)`);
   } catch (err) {
     showError(err);
@@ -305,8 +341,7 @@ async function saveDemonstration() {
 
 function onKey(event) {
   if (!view.playing || event.target.matches("textarea, input, select")) return;
-  let name = KEYS[event.key] || KEYS[event.key.toLowerCase?.()];
-  if (/^[1-8]$/.test(event.key) && view.scene) name = view.scene.actions[Number(event.key) - 1];
+  const name = actionForKey(event.key);
   if (event.key === "Backspace") { event.preventDefault(); queue(undo); return; }
   if (!name || !view.scene || !view.scene.actions.includes(name)) return;
   event.preventDefault();
@@ -328,7 +363,11 @@ async function start() {
   const wanted = new URLSearchParams(location.search).get("dungeon");
   const first = dungeons.some((d) => d.name === wanted) ? wanted : (dungeons.some((d) => d.name === "bridge") ? "bridge" : dungeons[0].name);
   $("dungeon-select").value = first;
-  $("dungeon-select").addEventListener("change", (e) => { setPlaying(false); loadShipped(e.target.value); });
+  $("dungeon-select").addEventListener("change", (e) => {
+    if (!e.target.value) return;  // "your dungeon": already drawn
+    setPlaying(false);
+    loadShipped(e.target.value);
+  });
   $("upload").addEventListener("change", async (e) => {
     const file = e.target.files[0];
     if (!file) return;
@@ -353,4 +392,4 @@ async function start() {
   document.body.dataset.ready = "1";
 }
 
-start().catch((err) => { showError(err); setStatus("could not reach the server"); });
+start().catch((err) => { showError(err); setStatus("could not reach the server", "bad"); });
