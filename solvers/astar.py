@@ -9,7 +9,8 @@ admissible heuristic stays optimal.
 Heuristic `auto` (the default) starts with the cheap `manhattan` and, if the search is
 still running after SWITCH_AFTER expansions, builds the pattern database and re-sorts the
 open list by it. Both are consistent, so optimality is kept: every closed state already
-has its optimal g, and the open list still holds a state of some optimal path.
+has its optimal g, and the open list still holds a state of some optimal path. A budget
+check or the switch never skips work: the state popped on that expansion is expanded.
 """
 from __future__ import annotations
 
@@ -67,7 +68,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
                 h = HEURISTICS["pdb"](model)
                 used = "auto (manhattan, then pdb)"
                 open_heap = _resort(open_heap, closed, g_of, h, weight)
-                continue
+                # no `continue`: `state` is closed and counted, so its successors are
+                # generated now (skipping them lost optimal paths through it)
         for action, nxt in successors(state):
             generated += 1
             g2 = g + costs[action]

@@ -1,0 +1,105 @@
+"""Every optimal solver/heuristic pair returns the same cost on generated mazes, and every
+plan replays to the goal at that cost.
+
+The pairs: A* x auto|pdb|manhattan|blind, BFS (every minecraft action costs 1, so BFS is
+optimal) and IDA*. A* with `pdb` and with `auto` must solve every maze; the others run
+under a state budget and are compared where they finish -- uninformed search blows up
+with stones (a 21x21 maze with 2 stones already has more than 400,000 reachable states),
+so on big mazes with many stones the independent reference is the search that does
+finish. The test also counts how many mazes had a reference that does not use the
+pattern database at all (BFS, blind or manhattan), so it cannot silently lose its teeth.
+
+"""
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from bcc.compiler import compile_dungeon
+from bcc.generate import generate_maze, max_rivers, max_stones
+from bcc.simulate import replay
+from bcc.solvers import Budget, astar, get_solver
+
+ALWAYS = (("astar", "pdb"), ("astar", "auto"))
+WHERE_THEY_FINISH = (("astar", "manhattan"), ("astar", "blind"), ("bfs", None), ("idastar", "pdb"))
+INDEPENDENT = {("astar", "manhattan"), ("astar", "blind"), ("bfs", None)}
+
+
+def maze_cases(count: int, seed: int, widest: int = 51, most_stones: int = 12, corners: bool = True) -> list[tuple]:
+    """`count` (width, depth, stones, lava, loops, seed) drawn over widths 11-51, 0-12
+    stones, 0-2 lava rivers and loops; the first ones pin the corners of that range."""
+    rng = random.Random(seed)
+    pinned = [(11, 11, 0, 0, 0.0), (11, 11, 12, 1, 0.3), (51, 51, 0, 0, 0.0), (51, 51, 12, 0, 0.0),
+               (51, 51, 12, 2, 0.1), (31, 21, 6, 1, 0.5)]
+    corners = pinned if corners else []
+    out = []
+    for i in range(count):
+        if i < len(corners):
+            width, depth, stones, lava, loops = corners[i]
+        else:
+            width, depth = rng.randrange(11, widest + 1, 2), rng.randrange(11, widest + 1, 2)
+            loops = rng.choice((0.0, 0.0, 0.1, 0.3, 1.0))
+            lava = rng.choice((0, 0, 1, 2))
+            stones = rng.randint(0, most_stones)
+        lava = min(lava, max_rivers(depth))
+        stones = min(stones, max_stones(width, depth, lava, loops))
+        out.append((width, depth, stones, lava, loops, seed * 1000 + i))
+    return out
+
+
+def solve_all(tmp_path, case, budget: Budget, idastar_seconds: float):
+    """{(solver, heuristic): Result} for one maze, after checking its plans."""
+    width, depth, stones, lava, loops, seed = case
+    path = tmp_path / f"maze_{seed}.yaml"
+    path.write_text(generate_maze(width, depth, stones, lava, loops, seed))
+    model = compile_dungeon(path)
+    assert set(model.action_costs) == {1}, "BFS is a reference only for unit costs"
+    results = {}
+    for solver, heuristic in ALWAYS + WHERE_THEY_FINISH:
+        options = {"heuristic": heuristic} if heuristic else {}
+        limit = Budget(time_limit=120) if (solver, heuristic) in ALWAYS else \
+            Budget(time_limit=idastar_seconds) if solver == "idastar" else budget   # IDA* stores only its path
+        r = get_solver(solver)(model, limit, **options)
+        if (solver, heuristic) in ALWAYS:
+            assert r.solved, f"{case}: {solver}/{heuristic}: {r.message}"
+        if not r.solved:
+            assert r.status == "budget", f"{case}: {solver}/{heuristic} says {r.status}: every maze is solvable"
+            continue
+        check = replay(model, [(a, 1, 1) for a in r.plan])
+        assert check.valid and check.reached_goal and check.cost == r.cost, f"{case}: {solver}/{heuristic}"
+        results[(solver, heuristic)] = r
+    costs = {pair: r.cost for pair, r in results.items()}
+    assert len(set(costs.values())) == 1, f"{case}: optimal solvers disagree: {costs}"
+    return results
+
+
+def run(tmp_path, cases, budget: Budget, idastar_seconds: float) -> int:
+    """Check every case; return how many had a reference independent of the pattern database."""
+    independent = 0
+    for case in cases:
+        results = solve_all(tmp_path, case, budget, idastar_seconds)
+        independent += any(pair in results for pair in INDEPENDENT)
+    return independent
+
+
+def test_quick_subset_agrees(tmp_path):
+    """Small mazes with at most one stone or river: BFS, blind and manhattan finish on each."""
+    cases = [c for c in maze_cases(40, seed=2, widest=17, most_stones=1, corners=False) if c[2] + c[3] <= 1][:8]
+    independent = run(tmp_path, cases, Budget(max_states=50_000, time_limit=30), idastar_seconds=2)
+    assert independent == len(cases)
+
+
+@pytest.mark.parametrize("name", ["bridge", "easy_maze", "tough_maze"])
+def test_auto_switch_on_any_expansion_keeps_the_optimum(monkeypatch, name):
+    """`auto` switches to the pattern database inside a budget check; the state popped
+    on that expansion must still be expanded. Switching after each of the first 60
+    expansions, with a check on every one, must give the pattern database's cost.
+    (Before the fix, 2 to 6 of these switch points returned longer plans.)"""
+    model = compile_dungeon(name)
+    optimum = get_solver("bfs")(model, Budget()).cost
+    monkeypatch.setattr(astar, "CHECK_EVERY", 1)
+    for switch_after in range(1, 60):
+        monkeypatch.setattr(astar, "SWITCH_AFTER", switch_after)
+        r = astar.solve(model, Budget())
+        assert r.cost == optimum, f"switching after {switch_after} expansions"
