@@ -148,6 +148,8 @@ class Scene(BaseModel):
     rooms: list[dict]
     objects: list[dict]
     actions: list[str]
+    keys: dict[str, str] = Field(default_factory=dict,
+                                 description="key -> action played by it: the same table as `bcc play`.")
 
 
 class ReplayResponse(BaseModel):

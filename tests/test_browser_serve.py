@@ -109,3 +109,17 @@ def test_a_malformed_dungeon_shows_its_line(page):
     page.wait_for_selector("#error:not([hidden])")
     text = page.inner_text("#error")
     assert text.startswith("line 3, column 7:") and "agentOnBlock" in text
+
+
+def test_a_pasted_dungeon_is_named_in_the_dropdown_and_a_failed_solve_looks_failed(page):
+    page.click("#play-toggle") if page.evaluate("window.bccView.playing") else None
+    page.fill("#yaml", "dungeon: mine\nextends: bridge\n")
+    page.click("#draw-btn")
+    page.wait_for_function("document.getElementById('status').textContent.startsWith('mine: drawn')")
+    assert page.input_value("#dungeon-select") == ""           # not "bridge" any more
+    assert "your dungeon" in page.inner_text("#dungeon-select option[data-own]")
+    page.fill("#max-states", "1")                               # a solve that must run out of states
+    page.click("#solve-btn")
+    page.wait_for_function("document.getElementById('status').textContent.startsWith('not solved')")
+    assert page.get_attribute("#status", "data-kind") == "bad"
+    page.fill("#max-states", "")
