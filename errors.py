@@ -1,7 +1,9 @@
 """One error type for every piece of bad input, carrying where in which file it is.
 
 The loader, the parser and the compiler raise `BccError`; the CLI prints it once as
-`file:line:col: message` and exits 2. Positions are 1-based.
+`file:line:col: message` and exits 2. Positions are 1-based. `InternalError` is the other
+side of that line: a check bcc makes of itself failed, so it is a bug in bcc (exit 3),
+never something the user can fix in the input.
 """
 from __future__ import annotations
 
@@ -22,8 +24,13 @@ def printable(text: str) -> str:
 class BccError(Exception):
     """Bad input (a dungeon, a domain, a plan, an expression), with its position when known."""
 
+    MAX_MESSAGE = 600  # a message quoting a huge value keeps its start and end
+
     def __init__(self, message: str, path: str | None = None,
                  line: int | None = None, col: int | None = None):
+        if len(message) > self.MAX_MESSAGE:
+            half = self.MAX_MESSAGE // 2
+            message = f"{message[:half]} ... {message[-half:]}"
         super().__init__(message)
         self.message = message
         self.path = path
@@ -43,6 +50,13 @@ class BccError(Exception):
         (a message may quote input)."""
         where = [str(p) for p in (self.path, self.line, self.col) if p is not None]
         return printable(":".join(where + [" " + self.message]) if where else self.message)
+
+
+class InternalError(Exception):
+    """A bug in bcc caught by one of its own consistency checks (the CLI exits 3).
+
+    Deliberately not a BccError: bad input is reported as bad input, and nothing the user
+    writes should ever reach one of these."""
 
 
 class ModelError(Exception):

@@ -19,7 +19,7 @@ from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
 from .emit import Emitter, GroundAction
-from .ground import Ctx, Grounder
+from .ground import Ctx, Grounder, check_nesting
 from .layout import make_layout
 from .parse import parse_expression
 from .reachability import Analysis, reachable
@@ -183,6 +183,7 @@ def _ground_one(g: Grounder, schema, name: str, combo, number: int) -> GroundAct
         pre.append(cond)
         texts.append(" ".join(src.text.split()))
     effects = g.effects(schema.effects.node, Ctx(schema.effects, env))
+    check_nesting(name, pre, effects, schema.effects)
     return GroundAction(name, schema.cost, lets, pre, texts, effects)
 
 

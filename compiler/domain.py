@@ -13,6 +13,7 @@ from ..errors import BccError
 from . import ast
 from .names import check_name, check_text
 from .parse import parse_effects, parse_expression
+from .limits import MAX_REF_LENGTH, shorten
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest, Origin
 
 DOMAINS_DIR = Path(__file__).resolve().parent.parent / "domains"
@@ -102,15 +103,27 @@ class Domain:
 
 def resolve_domain_path(ref: str, relative_to: Path | None = None) -> Path:
     """A domain is a shipped name (a file stem in domains/) or a path (relative to the dungeon file)."""
+    if len(ref) > MAX_REF_LENGTH:
+        raise BccError(f"a domain reference is a name or a path of at most {MAX_REF_LENGTH} characters, "
+                       f"found {len(ref):,}")
     candidates = []
     if relative_to is not None:
         candidates.append(relative_to.parent / ref)
     candidates += [Path(ref), DOMAINS_DIR / f"{ref}.yaml", DOMAINS_DIR / ref]
     for c in candidates:
-        if c.is_file():
+        if is_file(c):
             return c
     shipped = [p.stem for p in DOMAINS_DIR.glob("*.yaml")]
-    raise BccError(f"unknown domain {ref!r}{suggest(ref, shipped)}; shipped domains: {', '.join(sorted(shipped))}")
+    raise BccError(f"unknown domain {shorten(repr(ref))}{suggest(ref, shipped)}; "
+                   f"shipped domains: {', '.join(sorted(shipped))}")
+
+
+def is_file(path: Path) -> bool:
+    """Path.is_file, False for names the system refuses (too long, a NUL byte) instead of an OSError."""
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
 
 
 DOMAIN_KEYS = {"domain", "description", "extends", "types", "constants", "classes", "dungeon",
@@ -266,10 +279,20 @@ def _check_binding(data, b, classes) -> None:
         if not isinstance(rfields, YMap):
             raise error_at(spec, "fields", "`fields` maps room keys (x, z, color) to attributes")
         for key, target in rfields.items():
+            _ident(rfields, key, key, "a field name")
             names = target if isinstance(target, list) else [target]
+            if not names or not all(isinstance(n, str) for n in names):
+                raise error_at(rfields, key, "a field fills one attribute (a name) or several (a list of names)")
             for name in names:
                 if name not in cdef.attrs:
                     raise error_at(rfields, key, f"class {cdef.name!r} has no attribute {name!r}{suggest(str(name), cdef.attrs)}")
+        required = spec.get("required", [])
+        if not isinstance(required, YList) and "required" in spec:
+            raise error_at(spec, "required", "`required` is a list of field names, e.g. [species, at]")
+        for i, name in enumerate(required):
+            if not isinstance(name, str) or name not in rfields:
+                raise error_at(required, i, f"`required` lists fields of `dungeon.{part}`; {shorten(repr(name))} "
+                                            f"is not one{suggest(str(name), rfields)}")
 
 
 def _expr(container, key, effects: bool = False) -> Expr:
@@ -372,7 +395,10 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
 
 def _load_constants(data) -> dict[str, tuple[int, ...]]:
     out = {}
-    for name, values in (data.get("constants") or {}).items():
+    section = data.get("constants")
+    if section is not None and not isinstance(section, YMap):
+        raise error_at(data, "constants", "`constants` maps names to an integer or a list of integers")
+    for name, values in (section or {}).items():
         _ident(data["constants"], name, name, "a constant name")
         if isinstance(values, int) and not isinstance(values, bool):
             values = [values]
@@ -428,6 +454,8 @@ def _load_attr(section, aname, adef, enums) -> AttrDef:
         _ident(names, vname, vname, "a value name")
     names = dict(names)
     default = adef.get("default")
+    if atype in enums and not enums[atype].values:
+        raise error_at(adef, "type", f"the type {atype!r} has no values, so no attribute can have it")
     if default is None:
         default = {"int": 0, "bool": False}.get(atype, enums[atype].values[0] if atype in enums else None)
     elif atype in enums and default not in enums[atype].values:
@@ -444,7 +472,7 @@ def _param_list(definition: YMap, known_types) -> list[Param]:
         raise error_at(definition, "params", "`params` maps parameter names to types, e.g. {a: agent}")
     params = []
     for pname, ptype in section.items():
-        if ptype not in known_types:
+        if not isinstance(ptype, str) or ptype not in known_types:
             raise error_at(section, pname, f"unknown type or class {ptype!r}{suggest(str(ptype), known_types)}")
         params.append(Param(_ident(section, pname, pname, "a parameter"), ptype))
     return params

@@ -12,7 +12,8 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import BccError
-from .domain import Domain, Expr, _expr, load_domain, resolve_domain_path
+from .domain import Domain, Expr, _expr, is_file, load_domain, resolve_domain_path
+from .limits import MAX_GRID_CELLS, MAX_REF_LENGTH, shorten
 from .names import check_name, check_text, name_from_stem
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest
 
@@ -55,13 +56,16 @@ def shipped_dungeons() -> list[str]:
 
 def resolve_dungeon_path(ref: str | Path) -> Path:
     """A dungeon is a path, or the name of a shipped one (a file stem in dungeons/)."""
+    if len(str(ref)) > MAX_REF_LENGTH:
+        raise BccError(f"a dungeon reference is a name or a path of at most {MAX_REF_LENGTH} characters, "
+                       f"found {len(str(ref)):,}")
     path = Path(ref)
-    if path.is_file():
+    if is_file(path):
         return path
     for cand in (DUNGEONS_DIR / f"{ref}.yaml", DUNGEONS_DIR / str(ref)):
-        if cand.is_file():
+        if is_file(cand):
             return cand
-    raise BccError(f"no dungeon file or shipped dungeon named {str(ref)!r}"
+    raise BccError(f"no dungeon file or shipped dungeon named {shorten(repr(str(ref)))}"
                    f"{suggest(str(ref), shipped_dungeons())}; shipped: {', '.join(shipped_dungeons())}")
 
 
@@ -71,7 +75,9 @@ def _read_with_extends(path: Path, seen: tuple = ()) -> YMap:
     if "extends" not in data:
         return data
     ref = data["extends"]
-    base_path = (path.parent / str(ref)) if (path.parent / str(ref)).is_file() else None
+    if not isinstance(ref, str) or not ref:
+        raise error_at(data, "extends", "`extends` names one dungeon (a shipped name or a path)")
+    base_path = (path.parent / ref) if is_file(path.parent / ref) else None
     try:
         base_path = base_path or resolve_dungeon_path(str(ref))
     except BccError as exc:
@@ -137,6 +143,9 @@ class _Builder:
         legend = self.legend()
         rows, map_origin = self.rows(legend)
         depth, width = len(rows), len(rows[0])
+        if width * depth * height > MAX_GRID_CELLS:
+            raise error_at(data, "map", f"the dungeon has {width * depth * height:,} cells ({width} x {depth} "
+                                        f"x {height}); at most {MAX_GRID_CELLS:,}")
         grid = np.full((height, depth, width), self.default_index, dtype=np.uint8)
         for z, row in enumerate(rows):
             for x, ch in enumerate(row):

@@ -10,7 +10,7 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass
 
-from ..errors import BccError, ModelError
+from ..errors import BccError, InternalError, ModelError
 from . import ir
 from .layout import Layout
 
@@ -139,7 +139,7 @@ class Emitter:
         if isinstance(node, ir.Var):
             slot = self.L.by_var.get(node.var)
             if slot is None:
-                raise BccError(f"internal: {node.var.label} has no place in the state")
+                raise InternalError(f"{node.var.label} has no place in the state")
             return f"s[{slot.index}]" if slot.lo == 0 else f"(s[{slot.index}] + {slot.lo})"
         if isinstance(node, ir.VarAt):
             return f"s[{self.keyed_index(node.cls, node.key, node.attr)}]" + self._lo_suffix(node.cls, node.attr)
@@ -169,7 +169,7 @@ class Emitter:
             L = self.L
             return (f"{fn}({self.ex(node.body)} for {y} in range({L.height}) "
                     f"for {z} in range({L.depth}) for {x} in range({L.width}))")
-        raise BccError(f"internal: cannot compile {type(node).__name__}")
+        raise InternalError(f"cannot compile {type(node).__name__}")
 
     def _lo_suffix(self, cls, attr) -> str:
         kb = self.L.keyed[cls]
@@ -179,7 +179,7 @@ class Emitter:
     def keyed_index(self, cls: str, key, attr: str) -> str:
         kb = self.L.keyed.get(cls)
         if kb is None:
-            raise BccError(f"internal: class {cls} has no dynamic attributes in the state")
+            raise InternalError(f"class {cls} has no dynamic attributes in the state")
         k = self.ex(key)
         rel = k if kb.key_lo == 0 else f"({k} - {kb.key_lo})"
         if not self.within(key, kb.key_lo, kb.key_lo + kb.count - 1):
@@ -228,7 +228,7 @@ class Emitter:
             elif isinstance(e, ir.SetCell):
                 lines += self.store_cell(e, indent, action)
             else:
-                raise BccError(f"internal: cannot compile effect {type(e).__name__}")
+                raise InternalError(f"cannot compile effect {type(e).__name__}")
         return lines
 
     def store(self, index: str, value, lo: int, hi: int, label: str, indent: str) -> list[str]:

@@ -14,6 +14,7 @@ from ..errors import BccError
 from . import ast, ir
 from .domain import ClassDef, Expr
 from .dungeon import Dungeon
+from .limits import MAX_GENERATED_NESTING, MAX_GRID_CELLS, MAX_GROUND_DEPTH, MAX_KEYED_OBJECTS
 from .source import suggest
 
 CMP_NUMERIC = {"<", "<=", ">", ">="}
@@ -66,6 +67,7 @@ class Grounder:
         self.sizes = dungeon.sizes
         self.by_class = {c: [n for n, (oc, _) in dungeon.objects.items() if oc == c] for c in self.dom.classes}
         self.fresh = itertools.count()
+        self.depth = 0  # of `expr` calls in progress: bounds the nesting of the code emitted
         self.writes: list = []  # (class, attr) or ("<grid>", y IR), recorded by effects
         self.key_ranges = {c.name: self._key_ranges(c) for c in self.dom.classes.values() if c.key}
 
@@ -90,12 +92,17 @@ class Grounder:
         return int(value.value)
 
     def _key_ranges(self, cls: ClassDef):
-        out = []
+        out, count = [], 1
         for k in cls.key:
             r = self.attr_range(cls, k)
             if r is None or cls.attrs[k].type != "int":
                 raise BccError(f"key attribute {cls.name}.{k} needs an int `range`", self.dom.path)
             out.append(r)
+            count *= r[1] - r[0] + 1
+        limit = MAX_GRID_CELLS if self.is_grid(cls.name) else MAX_KEYED_OBJECTS
+        if count > limit:
+            src = cls.attrs[cls.key[-1]].range[0]
+            raise src.error(f"the key of {cls.name!r} ranges over {count:,} objects; at most {limit:,}")
         return out
 
     def keys_of(self, cls: str) -> list[tuple]:
@@ -148,7 +155,14 @@ class Grounder:
 
     def expr(self, node, ctx: Ctx, hint: str | None = None):
         method = getattr(self, "x_" + type(node).__name__)
-        return method(node, ctx, hint)
+        self.depth += 1
+        try:
+            if self.depth > MAX_GROUND_DEPTH:
+                raise ctx.error(node, f"the expression is nested more than {MAX_GROUND_DEPTH} levels deep "
+                                      "once the functions it calls are expanded")
+            return method(node, ctx, hint)
+        finally:
+            self.depth -= 1
 
     def x_Int(self, node, ctx, hint):
         return ir.Const(node.value, "int")
@@ -585,3 +599,17 @@ def _pin(cond, names: tuple):
         if isinstance(a, ir.Local) and a.name in names and not (ir.locals_of(b) & set(names)):
             return a.name, b
     return None
+
+
+def check_nesting(name: str, pre: list, effects: tuple, where: Expr) -> None:
+    """Each precondition and each conditional effect is one more indented block of the
+    generated Python, which allows at most 100: refuse an action that would need more."""
+    depth, todo = 0, [(e, 1) for e in effects]
+    while todo:
+        e, level = todo.pop()
+        if isinstance(e, ir.When):
+            depth = max(depth, level)
+            todo += [(x, level + 1) for x in e.then + e.orelse]
+    if len(pre) + depth > MAX_GENERATED_NESTING:
+        raise where.error(f"action {name}: {len(pre)} preconditions and effects nested {depth} deep "
+                          f"(each elif and `first` item is one level) exceed {MAX_GENERATED_NESTING} levels")

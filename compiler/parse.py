@@ -2,17 +2,23 @@
 
 Syntax errors become one-line BccErrors that say what was expected and what was found,
 positioned in the file the text came from (via an `Origin`).
+
+The tree becomes an AST without recursion (`_build`), so no text can exhaust Python's
+stack here: chains of one associative operator (`a and b and ...`, `x + y + ...`) become
+balanced trees, and any other nesting deeper than `MAX_EXPRESSION_DEPTH` is bad input.
 """
 from __future__ import annotations
 
 from functools import lru_cache
 
-from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken, VisitError
+from lark import Lark, Token, Tree
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from ..errors import BccError
 from ..grammar import GRAMMAR_FILE
 from . import ast
+from .limits import MAX_EXPRESSION_DEPTH, int_error, number_error, shorten
+from .names import MAX_NAME
 from .source import Origin
 
 # Spellings of the grammar's anonymous terminals, so errors never say "LPAR" or "__ANON_0".
@@ -42,8 +48,9 @@ def _pos(meta_or_token) -> ast.Pos:
     return (getattr(meta_or_token, "line", 1) or 1, getattr(meta_or_token, "column", 1) or 1)
 
 
-@v_args(meta=True, inline=True)
-class _ToAst(Transformer):
+class _ToAst:
+    """One method per grammar rule (or alias): (meta, *children) -> AST node."""
+
     def start_expr(self, meta, e):
         return e
 
@@ -52,6 +59,9 @@ class _ToAst(Transformer):
 
     # expressions
     def int(self, meta, tok):
+        problem = number_error(str(tok)) or int_error(int(tok))
+        if problem:
+            raise _Refused(problem, _pos(tok))
         return ast.Int(int(tok), _pos(tok))
 
     def true(self, meta):
@@ -61,16 +71,16 @@ class _ToAst(Transformer):
         return ast.Bool(False, _pos(meta))
 
     def name(self, meta, tok):
-        return ast.Name(str(tok), _pos(tok))
+        return ast.Name(_name(tok), _pos(tok))
 
     def attr(self, meta, obj, name):
-        return ast.Attr(obj, str(name), _pos(name))
+        return ast.Attr(obj, _name(name), _pos(name))
 
     def index(self, meta, obj, args):
         return ast.Index(obj, args, _pos(meta))
 
     def call(self, meta, name, args):
-        return ast.Call(str(name), args or (), _pos(name))
+        return ast.Call(_name(name), args or (), _pos(name))
 
     def args(self, meta, *items):
         return tuple(items)
@@ -94,10 +104,10 @@ class _ToAst(Transformer):
         return ast.Not(operand, _pos(meta))
 
     def exists(self, meta, var, cls, body):
-        return ast.Quantifier("exists", str(var), str(cls), body, _pos(meta))
+        return ast.Quantifier("exists", _name(var), _name(cls), body, _pos(meta))
 
     def forall(self, meta, var, cls, body):
-        return ast.Quantifier("forall", str(var), str(cls), body, _pos(meta))
+        return ast.Quantifier("forall", _name(var), _name(cls), body, _pos(meta))
 
     # effects
     def effects(self, meta, *items):
@@ -117,16 +127,16 @@ class _ToAst(Transformer):
         return ast.If(((cond, body),) + tuple(elifs), orelse or (), _pos(meta))
 
     def first(self, meta, var, cls, cond, body, orelse):
-        return ast.First(str(var), str(cls), cond, body, orelse or (), _pos(meta))
+        return ast.First(_name(var), _name(cls), cond, body, orelse or (), _pos(meta))
 
     def foreach(self, meta, var, cls, cond, body):
-        return ast.ForEach(str(var), str(cls), cond, body, _pos(meta))
+        return ast.ForEach(_name(var), _name(cls), cond, body, _pos(meta))
 
     def add(self, meta, target, *inits):
         return ast.Add(target, tuple(i for i in inits if i is not None), _pos(meta))
 
     def init(self, meta, name, value):
-        return (str(name), value)
+        return (_name(name), value)
 
     def remove(self, meta, target):
         return ast.Remove(target, _pos(meta))
@@ -134,6 +144,101 @@ class _ToAst(Transformer):
 
 # lark names the rule `elif`, a Python keyword: route it to `elif_`.
 setattr(_ToAst, "elif", _ToAst.elif_)
+_TO_AST = _ToAst()
+
+
+class _Refused(Exception):
+    """Bad input found while building the AST, at a position inside the text."""
+
+    def __init__(self, message: str, pos: ast.Pos):
+        super().__init__(message)
+        self.message, self.pos = message, pos
+
+
+def _name(tok: Token) -> str:
+    if len(tok) > MAX_NAME:
+        raise _Refused(f"the name {shorten(str(tok), 40)} is longer than {MAX_NAME} characters", _pos(tok))
+    return str(tok)
+
+
+# Rules that only group their children add no nesting of their own.
+_FLAT = {"args", "effects", "block", "elif", "init", "start_expr", "start_effects"}
+# Chains of one operator, rebuilt as balanced trees: rule -> operator (None: the rule is the operator).
+_CHAINS = {"and_": None, "or_": None}
+_ASSOCIATIVE = {"+", "*"}
+
+
+def _chain(tree: Tree) -> tuple[list, list] | None:
+    """The operands and operator tokens of a left-nested chain of one associative operator
+    (`a and b and c` parses as and_(and_(a, b), c)), or None for any other node."""
+    if tree.data in _CHAINS:
+        same = lambda t: isinstance(t, Tree) and t.data == tree.data  # noqa: E731
+    elif tree.data == "binop" and str(tree.children[1]) in _ASSOCIATIVE:
+        op = str(tree.children[1])
+        same = lambda t: isinstance(t, Tree) and t.data == "binop" and str(t.children[1]) == op  # noqa: E731
+    else:
+        return None
+    items, ops, node = [], [], tree
+    while same(node):
+        *left, right = node.children
+        items.append(right)
+        ops.append(left[1] if len(left) == 2 else node.meta)
+        node = left[0]
+    items.append(node)
+    return items[::-1], ops[::-1]
+
+
+def _balanced(rule: str, items: list, ops: list):
+    """A balanced tree over the items, split at the middle operator (depth log2 of their number)."""
+    if len(items) == 1:
+        return items[0]
+    mid = (len(items) + 1) // 2  # left-heavy: short chains keep their left-nested shape
+    left, right = _balanced(rule, items[:mid], ops[:mid - 1]), _balanced(rule, items[mid:], ops[mid:])
+    if rule == "binop":
+        return ast.BinOp(str(ops[mid - 1]), left, right, _pos(ops[mid - 1]))
+    node = ast.And if rule == "and_" else ast.Or
+    return node(left, right, left.pos)
+
+
+def _build(tree: Tree):
+    """The AST of a lark tree, made bottom-up with explicit stacks (no recursion); deeper
+    nesting than MAX_EXPRESSION_DEPTH is refused at the node that crosses it."""
+    values: list = []          # (AST value, depth)
+    todo: list = [("visit", tree)]
+    while todo:
+        step, node = todo.pop()
+        if step == "visit":
+            if not isinstance(node, Tree):
+                values.append((node, 0))
+                continue
+            chain = _chain(node)
+            if chain is not None:
+                items, ops = chain
+                todo.append(("chain", (node, ops, len(items))))
+                todo.extend(("visit", item) for item in reversed(items))
+            else:
+                todo.append(("make", node))
+                todo.extend(("visit", child) for child in reversed(node.children))
+            continue
+        if step == "make":
+            n = len(node.children)
+            args = values[len(values) - n:] if n else []
+            del values[len(values) - n:]
+            depth = max((d for _, d in args), default=0) + (node.data not in _FLAT)
+            value = getattr(_TO_AST, node.data)(node.meta, *(v for v, _ in args))
+            where = node.meta
+        else:  # chain
+            tree_node, ops, n = node
+            args = values[len(values) - n:]
+            del values[len(values) - n:]
+            depth = max(d for _, d in args) + (n - 1).bit_length()
+            value = _balanced(tree_node.data, [v for v, _ in args], ops)
+            where = tree_node.meta
+        if depth > MAX_EXPRESSION_DEPTH:
+            raise _Refused(f"the expression is nested more than {MAX_EXPRESSION_DEPTH} levels deep; "
+                           "name parts of it as functions", _pos(where))
+        values.append((value, depth))
+    return values[0][0]
 
 
 def parse_expression(text: str, where: Origin) -> ast.Node:
@@ -151,11 +256,11 @@ def _parse(text: str, start: str, where: Origin):
         raise where.error("empty expression")
     try:
         tree = _parser().parse(text, start=start)
-        return _ToAst().transform(tree)
+        return _build(tree)
     except UnexpectedInput as exc:
         raise _syntax_error(exc, text, where) from None
-    except VisitError as exc:  # pragma: no cover - the transformer raises nothing itself
-        raise where.error(f"cannot read expression: {exc.orig_exc}") from None
+    except _Refused as exc:
+        raise where.error(exc.message, *exc.pos) from None
 
 
 def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:

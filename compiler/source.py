@@ -7,14 +7,17 @@ module hands out is 1-based.
 """
 from __future__ import annotations
 
+import bisect
 import difflib
 import functools
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 
 from ..errors import BccError, read_input
+from .limits import MAX_ALIAS_VALUES, MAX_FILE_BYTES, MAX_YAML_DEPTH, int_error, number_error, shorten
 
 
 class YMap(dict):
@@ -88,17 +91,93 @@ class Origin:
 
 def load_yaml(path: str | Path) -> YMap:
     """Parse one YAML document into YMap/YList with positions; bad YAML is a BccError."""
-    return load_yaml_text(read_input(path), str(path))
+    return load_yaml_text(_read_source(path), str(path))
+
+
+def _read_source(path: str | Path) -> str:
+    """The file's text, refused past `MAX_FILE_BYTES` (read no further) or where it is not UTF-8."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read(MAX_FILE_BYTES + 1)
+    except (OSError, ValueError):
+        return read_input(path)  # the same one-line message as every other file bcc reads
+    if len(data) > MAX_FILE_BYTES:
+        raise BccError(f"the file is larger than {MAX_FILE_BYTES // 2**20} MiB", str(path))
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        col = len(data[data.rfind(b"\n", 0, exc.start) + 1:exc.start].decode("utf-8", "replace")) + 1
+        raise BccError(f"the file is not UTF-8 text (byte 0x{data[exc.start]:02x})", str(path), line, col) from None
+
+
+_TIMESTAMP = "tag:yaml.org,2002:timestamp"
+# The tags of plain data. Others (!!timestamp, !!binary, !!set, !!omap, !!pairs, !custom)
+# make objects the loaders never expect, so they are refused where they are written.
+_PLAIN_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("str", "int", "bool", "null", "float", "seq", "map")}
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
+class _Alias:
+    """Where a `*name` alias is used (PyYAML's composer returns the anchored node itself,
+    losing the place): lets loops and alias bombs be reported at the alias."""
+    __slots__ = ("node", "start_mark")
+
+    def __init__(self, node: yaml.Node, start_mark):
+        self.node, self.start_mark = node, start_mark
+
+
+class _Loader(yaml.SafeLoader):
+    """SafeLoader for plain data: bounded nesting, bounded numbers, no timestamps.
+
+    An unquoted `2001-01-01` stays text (a dungeon has no use for dates)."""
+    yaml_implicit_resolvers = {first: [(tag, rx) for tag, rx in resolvers if tag != _TIMESTAMP]
+                               for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()}
+
+    def __init__(self, text: str, path: str):
+        super().__init__(text)
+        self.bcc_path, self.bcc_depth = path, 0
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            mark = self.peek_event().start_mark
+            return _Alias(super().compose_node(parent, index), mark)
+        self.bcc_depth += 1
+        try:
+            if self.bcc_depth > MAX_YAML_DEPTH:
+                m = self.peek_event().start_mark
+                raise BccError(f"lists and mappings are nested more than {MAX_YAML_DEPTH} levels deep",
+                               self.bcc_path, m.line + 1, m.column + 1)
+            return super().compose_node(parent, index)
+        finally:
+            self.bcc_depth -= 1
+
+    def construct_yaml_int(self, node):
+        problem = number_error(node.value)
+        if problem is None:
+            value = super().construct_yaml_int(node)
+            problem = int_error(value)
+            if problem is None:
+                return value
+        raise BccError(problem, self.bcc_path, *node_pos(node))
+
+
+_Loader.add_constructor("tag:yaml.org,2002:int", _Loader.construct_yaml_int)
 
 
 def load_yaml_text(text: str, path: str) -> YMap:
+    if len(text) > MAX_FILE_BYTES:
+        raise BccError(f"the text is larger than {MAX_FILE_BYTES // 2**20} MiB", path)
     src = SourceFile(path, text)
-    loader = yaml.SafeLoader(text)
+    try:
+        loader = _Loader(text, path)
+    except yaml.reader.ReaderError as exc:
+        raise _reader_error(exc, src) from None
     try:
         root = loader.get_single_node()
         if root is None:
             raise BccError("the file is empty", path, 1, 1)
-        data = _convert(root, loader, src)
+        data = _Converter(loader, src).convert(root, 0)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         problem = exc.problem or exc.context or "invalid YAML"
@@ -106,8 +185,10 @@ def load_yaml_text(text: str, path: str) -> YMap:
             problem += " (a ': ' inside a value: quote the value, or write `exists x in C . ...`)"
         line, col = (mark.line + 1, mark.column + 1) if mark else (None, None)
         raise BccError(f"invalid YAML: {problem}", path, line, col) from None
+    except yaml.reader.ReaderError as exc:
+        raise _reader_error(exc, src) from None
     except yaml.YAMLError as exc:
-        raise BccError(f"invalid YAML: {exc}", path) from None
+        raise BccError(f"invalid YAML: {shorten(str(exc).splitlines()[0], 200)}", path) from None
     finally:
         loader.dispose()
     if not isinstance(data, YMap):
@@ -115,26 +196,91 @@ def load_yaml_text(text: str, path: str) -> YMap:
     return data
 
 
-def _convert(node: yaml.Node, loader: yaml.SafeLoader, src: SourceFile):
-    if isinstance(node, yaml.MappingNode):
+def _reader_error(exc, src: SourceFile) -> BccError:
+    """PyYAML refuses control characters (NUL, ESC, ...) with an offset into the text."""
+    where = _line_col(src.line_starts, exc.position) if isinstance(exc.position, int) else (None, None)
+    char = exc.character
+    shown = f"#x{char:04x}" if isinstance(char, int) else repr(char)
+    return BccError(f"invalid YAML: the character {shown} is not allowed in YAML text "
+                    "(control characters other than tab and line breaks)", src.path, *where)
+
+
+class _Converter:
+    """YAML nodes -> YMap/YList/values, with the limits that a node graph needs: a value that
+    contains itself through an alias, aliases that repeat more than `MAX_ALIAS_VALUES`
+    values, nesting deeper than `MAX_YAML_DEPTH` once aliases are expanded, text with
+    lone surrogates, and tags other than plain data."""
+
+    def __init__(self, loader: _Loader, src: SourceFile):
+        self.loader, self.src = loader, src
+        self.seen: set[int] = set()
+        self.active: set[int] = set()
+        self.repeated = 0
+
+    def error(self, node, message: str) -> BccError:
+        return BccError(message, self.src.path, *node_pos(node))
+
+    def convert(self, node, depth: int):
+        if isinstance(node, _Alias):
+            if id(node.node) in self.active:
+                raise self.error(node, "this alias refers to a value that contains it (a YAML loop)")
+            if depth > MAX_YAML_DEPTH:
+                raise self.error(node, f"lists and mappings are nested more than {MAX_YAML_DEPTH} levels deep "
+                                       "once aliases are expanded")
+            return self.convert(node.node, depth)
+        if id(node) in self.seen:
+            self.repeated += 1
+            if self.repeated > MAX_ALIAS_VALUES:
+                raise self.error(node, f"YAML aliases repeat more than {MAX_ALIAS_VALUES:,} values; "
+                                       "write the values out or use fewer aliases")
+        self.seen.add(id(node))
+        if node.tag not in _PLAIN_TAGS:
+            raise self.error(node, f"the YAML tag {_tag_name(node.tag)} is not supported: bcc reads text, "
+                                   "whole numbers, true/false, null, lists and mappings")
+        if isinstance(node, yaml.MappingNode):
+            return self.mapping(node, depth)
+        if isinstance(node, yaml.SequenceNode):
+            self.active.add(id(node))
+            out = YList(self.convert(item, depth + 1) for item in node.value)
+            self.active.discard(id(node))
+            out.node, out.nodes, out.src = node, [_target(item) for item in node.value], self.src
+            return out
+        return self.scalar(node)
+
+    def mapping(self, node, depth: int) -> YMap:
         out = YMap()
-        out.node, out.nodes, out.src = node, {}, src
+        out.node, out.nodes, out.src = node, {}, self.src
+        self.active.add(id(node))
         for key_node, value_node in node.value:
+            key_node = _target(key_node)
             if not isinstance(key_node, yaml.ScalarNode) or key_node.tag == "tag:yaml.org,2002:merge":
-                m = key_node.start_mark
-                raise BccError("only plain keys are supported here", src.path, m.line + 1, m.column + 1)
-            key = loader.construct_object(key_node, deep=True)
+                raise self.error(key_node, "only plain keys are supported here")
+            key = self.scalar(key_node)
             if key in out:
-                m = key_node.start_mark
-                raise BccError(f"duplicate key {key!r}", src.path, m.line + 1, m.column + 1)
-            out[key] = _convert(value_node, loader, src)
-            out.nodes[key] = (key_node, value_node)
+                raise self.error(key_node, f"duplicate key {shorten(repr(key))}")
+            out[key] = self.convert(value_node, depth + 1)
+            out.nodes[key] = (key_node, _target(value_node))
+        self.active.discard(id(node))
         return out
-    if isinstance(node, yaml.SequenceNode):
-        out = YList(_convert(item, loader, src) for item in node.value)
-        out.node, out.nodes, out.src = node, list(node.value), src
-        return out
-    return loader.construct_object(node, deep=True)
+
+    def scalar(self, node):
+        if node.tag not in _PLAIN_TAGS:
+            raise self.error(node, f"the YAML tag {_tag_name(node.tag)} is not supported: bcc reads text, "
+                                   "whole numbers, true/false, null, lists and mappings")
+        value = self.loader.construct_object(node, deep=True)
+        if isinstance(value, str) and _SURROGATE.search(value):
+            raise self.error(node, "the text holds a lone surrogate (such as \\ud800), which is not a character")
+        return value
+
+
+def _target(node):
+    return node.node if isinstance(node, _Alias) else node
+
+
+def _tag_name(tag: str | None) -> str:
+    if tag and tag.startswith("tag:yaml.org,2002:"):
+        return "!!" + tag[len("tag:yaml.org,2002:"):]
+    return shorten(str(tag), 40)
 
 
 # ---- positions -------------------------------------------------------------------
@@ -213,7 +359,6 @@ def _align(src: SourceFile, node, value: str) -> tuple:
 
 
 def _line_col(starts: list, index: int) -> tuple[int, int]:
-    import bisect
     k = bisect.bisect_right(starts, index) - 1
     return k + 1, index - starts[k] + 1
 

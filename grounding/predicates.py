@@ -11,7 +11,7 @@ from __future__ import annotations
 import functools
 from pathlib import Path
 
-from ..errors import BccError
+from ..errors import BccError, InternalError
 from ..model import Model
 
 
@@ -43,7 +43,7 @@ class Predicates:
         reach = reachable(layout, actions, {s.var: initial[s.index] + s.lo for s in layout.slots}, len(venum.values))
         layout = make_layout(g, d, dynamic, {y for y, vals in reach.written.items() if vals})
         if layout.initial(g, d) != model.initial or layout.size != len(model.initial):
-            raise BccError(f"internal: the predicate layout of {d.name} differs from the compiled model's")
+            raise InternalError(f"the predicate layout of {d.name} differs from the compiled model's")
         self._g, self._layout, self._reach = g, layout, reach
         self._an = Analysis(layout, len(venum.values))
         self._emitter = Emitter(layout, {n: len(e.values) for n, e in d.domain.enums.items()})

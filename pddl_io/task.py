@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from ..errors import BccError, ModelError
+from ..errors import InternalError, ModelError
 from .domains import Domains, domains_for
 from .symbolic import explore, symbolic_functions
 
@@ -130,7 +130,7 @@ def _naming(model, n_bytes: int):
                 value_names[i] = cells
     for i in range(n_bytes):
         if i not in predicates:
-            raise BccError(f"internal: state byte {i} of {model.name} belongs to no variable or cell")
+            raise InternalError(f"state byte {i} of {model.name} belongs to no variable or cell")
     return predicates, value_names
 
 
