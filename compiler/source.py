@@ -216,6 +216,7 @@ class _Converter:
         self.seen: set[int] = set()
         self.active: set[int] = set()
         self.repeated = 0
+        self.via: _Alias | None = None  # the outermost alias being expanded, for error positions
 
     def error(self, node, message: str) -> BccError:
         return BccError(message, self.src.path, *node_pos(node))
@@ -224,10 +225,17 @@ class _Converter:
         if isinstance(node, _Alias):
             if id(node.node) in self.active:
                 raise self.error(node, "this alias refers to a value that contains it (a YAML loop)")
-            if depth > MAX_YAML_DEPTH:
-                raise self.error(node, f"lists and mappings are nested more than {MAX_YAML_DEPTH} levels deep "
-                                       "once aliases are expanded")
-            return self.convert(node.node, depth)
+            outer = self.via is None
+            if outer:
+                self.via = node
+            try:
+                return self.convert(node.node, depth)
+            finally:
+                if outer:
+                    self.via = None
+        if depth > MAX_YAML_DEPTH:  # only through an alias: the composer bounds the rest
+            raise self.error(self.via or node, f"lists and mappings are nested more than {MAX_YAML_DEPTH} "
+                                               "levels deep once aliases are expanded")
         if id(node) in self.seen:
             self.repeated += 1
             if self.repeated > MAX_ALIAS_VALUES:
@@ -267,7 +275,10 @@ class _Converter:
         if node.tag not in _PLAIN_TAGS:
             raise self.error(node, f"the YAML tag {_tag_name(node.tag)} is not supported: bcc reads text, "
                                    "whole numbers, true/false, null, lists and mappings")
-        value = self.loader.construct_object(node, deep=True)
+        try:
+            value = self.loader.construct_object(node, deep=True)
+        except (ValueError, TypeError):  # an explicit tag on text that is not of its type: `!!int x`
+            raise self.error(node, f"{shorten(repr(node.value))} is not a valid {_tag_name(node.tag)}") from None
         if isinstance(value, str) and _SURROGATE.search(value):
             raise self.error(node, "the text holds a lone surrogate (such as \\ud800), which is not a character")
         return value
@@ -367,14 +378,15 @@ def check_keys(container: YMap, allowed: set[str], required: set[str], what: str
     """Unknown keys (with a did-you-mean) and missing keys are errors with positions."""
     for key in container:
         if key not in allowed:
-            close = difflib.get_close_matches(str(key), sorted(allowed), n=1)
+            close = difflib.get_close_matches(str(key), sorted(map(str, allowed)), n=1)
             hint = f" (did you mean {close[0]!r}?)" if close else ""
-            raise error_at(container, key, f"unknown key {key!r} in {what}{hint}", on_key=True)
+            raise error_at(container, key, f"unknown key {shorten(repr(key))} in {what}{hint}", on_key=True)
     for key in sorted(required):
         if key not in container:
             raise error_on(container, f"{what} is missing the key {key!r}")
 
 
 def suggest(name: str, options) -> str:
-    close = difflib.get_close_matches(name, sorted(options), n=1)
+    """A did-you-mean hint; options may hold any YAML keys (numbers, true, null)."""
+    close = difflib.get_close_matches(str(name), sorted({str(o) for o in options}), n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
