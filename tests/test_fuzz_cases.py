@@ -145,9 +145,9 @@ def test_a_sum_of_500_terms_keeps_its_value(tmp_path):
 
 def test_an_unquoted_date_is_text_not_a_timestamp(tmp_path):
     path = tmp_path / "case.yaml"
-    path.write_text(BRIDGE.replace("dungeon: bridge", "dungeon: 2001-01-01"), encoding="utf-8")
+    path.write_text(re.sub(r"description: .*", "description: 2001-01-01", BRIDGE), encoding="utf-8")
     from bcc.compiler import load_dungeon
-    assert load_dungeon(str(path)).name == "2001-01-01"
+    assert load_dungeon(str(path)).description == "2001-01-01"
 
 
 def test_a_file_past_the_size_limit_is_refused_unread(tmp_path, monkeypatch):
