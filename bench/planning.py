@@ -1,0 +1,275 @@
+#!/usr/bin/env python3
+"""Planning benchmark: bcc on IPC problems and manipulation dungeons, beside Fast Downward.
+
+    python bench/planning.py --ipc /path/to/checkouts                   # the whole manifest
+    python bench/planning.py --ipc DIR --only 'gripper|sokoban' --time-limit 30
+    python bench/planning.py --dungeons-only                            # bcc's dungeons only
+
+The IPC files are not in this repository: bench/planning_manifest.txt names each problem
+as `REPOSITORY DOMAIN-PATH PROBLEM-PATH` inside a public repository
+(AI-Planning/classical-domains, potassco/pddl-instances). `--ipc DIR` is a folder holding
+a copy of each repository under its last name part (DIR/classical-domains/...,
+DIR/pddl-instances/...); a problem whose files are missing is reported and skipped.
+
+Every run is a whole process, timed from start to exit (import, parse, ground, search):
+bcc `import pddl` with each bcc configuration, and Fast Downward's driver (translator and
+search) with astar(blind()), astar(lmcut()) and lazy_greedy([ff()]) in the same run, each
+with the same time limit. Per problem: solved, cost, expansions, seconds. bcc's plans are
+checked by an independent validator (pddl-pyvalidator, when installed) and their costs
+against Fast Downward's optimal configurations. Prints coverage and ratio tables, writes
+bench/planning.json and, with matplotlib, bench/planning.png.
+
+The manipulation dungeons (bench/dungeons/stones_N.yaml: three rooms, N stones to carry
+into the blue room) run through `bcc solve` and through `--solver fd` (Fast Downward on
+bcc's own PDDL export), beside each other.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+MANIFEST = HERE / "planning_manifest.txt"
+FD_CONFIGS = {"fd-blind": "astar(blind())", "fd-lmcut": "astar(lmcut())", "fd-ff": "lazy_greedy([ff()])"}
+BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"]}
+OPTIMAL = {"bcc-astar", "fd-blind", "fd-lmcut"}
+DUNGEON_GOAL = "every stone in the blue room"
+
+
+def read_manifest(path: Path) -> list[dict]:
+    out = []
+    for n, line in enumerate(path.read_text().splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        parts = line.split()
+        if len(parts) != 3:
+            sys.exit(f"{path}:{n}: expected REPOSITORY DOMAIN PROBLEM")
+        repo, dom, prob = parts
+        out.append({"repo": repo, "domain_path": dom, "problem_path": prob,
+                    "name": f"{Path(dom).parent.name}/{Path(prob).stem}"})
+    return out
+
+
+def timed(cmd: list, limit: float, cwd: str | None = None) -> tuple[subprocess.CompletedProcess | None, float]:
+    start = time.perf_counter()
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 15, cwd=cwd)
+    except subprocess.TimeoutExpired:
+        return None, time.perf_counter() - start
+    return proc, time.perf_counter() - start
+
+
+def run_bcc(config: str, domain: str, problem: str, limit: float, plan_file: str) -> dict:
+    cmd = [sys.executable, "-m", "bcc", "import", "pddl", domain, problem, "--json", "--time-limit", str(limit),
+           "-o", plan_file, *BCC_CONFIGS[config]]
+    proc, seconds = timed(cmd, limit)
+    row = {"config": config, "seconds": round(seconds, 3), "solved": False}
+    if proc is None:
+        return {**row, "status": "killed"}
+    try:
+        data = json.loads(proc.stdout)
+    except ValueError:
+        msg = (proc.stderr.strip().splitlines() or ["?"])[-1]
+        return {**row, "status": "error" if proc.returncode == 2 else "crash", "message": msg[:300]}
+    return {**row, "solved": data.get("solved", False), "status": data.get("status"), "cost": data.get("cost"),
+            "expanded": data.get("expanded"), "search_seconds": data.get("seconds"),
+            "atoms": data.get("atoms"), "actions": data.get("grounded_actions"), "heuristic": data.get("heuristic")}
+
+
+def run_fd(config: str, domain: str, problem: str, limit: float) -> dict:
+    from bcc.pddl_io.fast_downward import driver
+    with tempfile.TemporaryDirectory(prefix="bcc-bench-fd-") as tmp:
+        cmd = [sys.executable, str(driver()), "--overall-time-limit", f"{int(limit)}s", "--plan-file",
+               os.path.join(tmp, "plan"), os.path.abspath(domain), os.path.abspath(problem),
+               "--search", FD_CONFIGS[config]]
+        proc, seconds = timed(cmd, limit, cwd=tmp)
+        row = {"config": config, "seconds": round(seconds, 3), "solved": False}
+        if proc is None:
+            return {**row, "status": "killed"}
+        out = proc.stdout
+        exp = re.findall(r"Expanded (\d+) state", out)
+        if proc.returncode == 0 and os.path.exists(os.path.join(tmp, "plan")):
+            cost = re.search(r"Plan cost: (\d+)", out)
+            return {**row, "solved": True, "status": "solved", "cost": int(cost[1]) if cost else None,
+                    "expanded": int(exp[-1]) if exp else None}
+        status = {11: "no_solution", 12: "no_solution", 23: "budget", 22: "budget", 21: "budget", 20: "budget",
+                  232: "budget"}.get(proc.returncode, f"error {proc.returncode}")
+        return {**row, "status": status, "expanded": int(exp[-1]) if exp else None}
+
+
+def validate_plan(domain: str, problem: str, plan_file: str) -> str:
+    try:
+        from bcc.pddl_io.plans import validate
+        ok, why = validate(domain, problem, plan_file)
+    except Exception as exc:  # noqa: BLE001 - the validator is optional and may fail on its own
+        return f"not checked ({type(exc).__name__})"
+    return "valid" if ok else f"INVALID: {why}"
+
+
+# ---- the manipulation dungeons ------------------------------------------------------
+def run_dungeon(path: Path, solver: list, limit: float, label: str) -> dict:
+    cmd = [sys.executable, "-m", "bcc", "solve", str(path), "--json", "--time-limit", str(limit), *solver]
+    proc, seconds = timed(cmd, limit)
+    row = {"config": label, "seconds": round(seconds, 3), "solved": False}
+    if proc is None:
+        return {**row, "status": "killed"}
+    try:
+        data = json.loads(proc.stdout)
+    except ValueError:
+        return {**row, "status": "error", "message": (proc.stderr.strip().splitlines() or ["?"])[-1][:300]}
+    return {**row, "solved": data.get("solved", False), "status": data.get("status"), "cost": data.get("cost"),
+            "expanded": data.get("expanded"), "search_seconds": data.get("seconds"), "heuristic": data.get("heuristic")}
+
+
+DUNGEON_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-gbfs": ["--solver", "gbfs"],
+                   "fd-blind": ["--solver", "fd", "--fd-search", "astar(blind())"],
+                   "fd-ff": ["--solver", "fd", "--fd-search", "lazy_greedy([ff()])"]}
+
+
+# ---- reports ------------------------------------------------------------------------
+def summarize(problems: list, configs: list) -> dict:
+    cov = {c: sum(1 for p in problems if p["runs"].get(c, {}).get("solved")) for c in configs}
+    fd = [c for c in configs if c.startswith("fd-")]
+    ratios = {}
+    for c in configs:
+        if c.startswith("fd-"):
+            continue
+        rs = []
+        for p in problems:
+            mine = p["runs"].get(c, {})
+            best = [p["runs"][f]["seconds"] for f in fd if p["runs"].get(f, {}).get("solved")]
+            if mine.get("solved") and best:
+                rs.append(mine["seconds"] / min(best))
+        ratios[c] = {"median_vs_best_fd": round(statistics.median(rs), 2) if rs else None,
+                     "worst_vs_best_fd": round(max(rs), 2) if rs else None, "problems": len(rs)}
+    wrong = [p["name"] for p in problems if p.get("cost_check", "").startswith("WRONG")]
+    invalid = [p["name"] for p in problems if p.get("validation", "").startswith("INVALID")]
+    return {"coverage": cov, "time_ratios": ratios, "wrong_costs": wrong, "invalid_plans": invalid,
+            "problems": len(problems)}
+
+
+def print_table(problems: list, configs: list, title: str):
+    print(f"\n## {title}")
+    head = f"{'problem':<44}" + "".join(f"{c:>22}" for c in configs)
+    print(head)
+    print("-" * len(head))
+    for p in problems:
+        cells = []
+        for c in configs:
+            r = p["runs"].get(c, {})
+            if r.get("solved"):
+                exp = r.get("expanded")
+                cells.append(f"{r['cost']}/{exp if exp is not None else '-'}/{r['seconds']:.1f}s")
+            else:
+                cells.append(str(r.get("status", "-"))[:12])
+        print(f"{p['name'][:43]:<44}" + "".join(f"{x:>22}" for x in cells))
+    print("(cells: cost/expanded/whole-process seconds)")
+
+
+def plot(problems: list, configs: list, path: Path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("(no plot: pip install matplotlib)")
+        return
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for c in configs:
+        times = sorted(p["runs"][c]["seconds"] for p in problems if p["runs"].get(c, {}).get("solved"))
+        ax.step(times, range(1, len(times) + 1), where="post", label=f"{c} ({len(times)})")
+    ax.set_xscale("log")
+    ax.set_xlabel("whole-process seconds")
+    ax.set_ylabel("problems solved")
+    ax.set_title("Coverage against time")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print(f"wrote {path}")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--ipc", type=Path, help="folder with copies of the repositories the manifest names")
+    ap.add_argument("--manifest", type=Path, default=MANIFEST)
+    ap.add_argument("--only", help="regular expression: only problems whose name matches")
+    ap.add_argument("--time-limit", type=float, default=120.0)
+    ap.add_argument("--configs", default=",".join([*BCC_CONFIGS, *FD_CONFIGS]))
+    ap.add_argument("--no-validate", action="store_true")
+    ap.add_argument("--dungeons-only", action="store_true")
+    ap.add_argument("--no-dungeons", action="store_true")
+    ap.add_argument("--out", type=Path, default=HERE / "planning.json")
+    ap.add_argument("--plot", type=Path, default=HERE / "planning.png")
+    args = ap.parse_args(argv)
+    configs = args.configs.split(",")
+    problems, dungeons = [], []
+    if not args.dungeons_only:
+        if args.ipc is None:
+            ap.error("--ipc DIR is needed (or --dungeons-only)")
+        for entry in read_manifest(args.manifest):
+            if args.only and not re.search(args.only, entry["name"]):
+                continue
+            base = args.ipc / entry["repo"].split("/")[-1]
+            dom, prob = base / entry["domain_path"], base / entry["problem_path"]
+            if not dom.is_file() or not prob.is_file():
+                print(f"skip {entry['name']}: {dom if not dom.is_file() else prob} is missing", file=sys.stderr)
+                continue
+            runs = {}
+            with tempfile.TemporaryDirectory(prefix="bcc-bench-") as tmp:
+                plan_file = os.path.join(tmp, "plan")
+                for c in configs:
+                    if c in BCC_CONFIGS:
+                        runs[c] = run_bcc(c, str(dom), str(prob), args.time_limit, plan_file)
+                        if runs[c].get("solved") and not args.no_validate:
+                            entry["validation"] = validate_plan(str(dom), str(prob), plan_file)
+                    else:
+                        runs[c] = run_fd(c, str(dom), str(prob), args.time_limit)
+            entry["runs"] = runs
+            opt = {r["cost"] for c, r in runs.items() if c in OPTIMAL and c.startswith("fd-") and r.get("solved")}
+            mine = runs.get("bcc-astar", {})
+            if mine.get("solved") and opt:
+                entry["cost_check"] = "ok" if {mine["cost"]} == opt else f"WRONG: bcc {mine['cost']}, FD {sorted(opt)}"
+            problems.append(entry)
+            r = runs.get("bcc-astar", {})
+            print(f"{entry['name']:<44} bcc {r.get('status')} cost {r.get('cost')} exp {r.get('expanded')} "
+                  f"{r.get('seconds')}s | " + " ".join(f"{c} {runs[c].get('cost')}/{runs[c]['seconds']}s"
+                                                      for c in configs if c.startswith("fd-")) +
+                  f" {entry.get('cost_check', '')} {entry.get('validation', '')}", file=sys.stderr, flush=True)
+    if not args.no_dungeons:
+        for path in sorted((HERE / "dungeons").glob("stones_*.yaml"), key=lambda p: int(p.stem.split("_")[1])):
+            runs = {c: run_dungeon(path, s, args.time_limit, c) for c, s in DUNGEON_CONFIGS.items()}
+            dungeons.append({"name": path.stem, "runs": runs})
+            print(f"{path.stem}: " + " ".join(f"{c} {r.get('cost')}/{r.get('expanded')}/{r['seconds']}s"
+                                            for c, r in runs.items()), file=sys.stderr, flush=True)
+    report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
+              "time_limit": args.time_limit, "configs": configs}
+    if problems:
+        print_table(problems, configs, "IPC problems")
+        report["ipc"] = {"summary": summarize(problems, configs), "problems": problems}
+        s = report["ipc"]["summary"]
+        print(f"\ncoverage: " + ", ".join(f"{c} {n}/{len(problems)}" for c, n in s["coverage"].items()))
+        for c, r in s["time_ratios"].items():
+            print(f"{c}: whole-process time / best Fast Downward configuration: median {r['median_vs_best_fd']}x, "
+                  f"worst {r['worst_vs_best_fd']}x over {r['problems']} problems both solved")
+        print(f"wrong costs: {s['wrong_costs'] or 'none'}; invalid plans: {s['invalid_plans'] or 'none'}")
+        plot(problems, configs, args.plot)
+    if dungeons:
+        print_table(dungeons, list(DUNGEON_CONFIGS), f"Manipulation dungeons ({DUNGEON_GOAL})")
+        report["dungeons"] = dungeons
+    from bcc.atomic import write_text
+    write_text(str(args.out), json.dumps(report, indent=1) + "\n")
+    print(f"wrote {args.out}")
+
+
+if __name__ == "__main__":
+    main()
