@@ -77,12 +77,20 @@ def to_ir(task: GroundTask):
 
 
 def successors_source(em: Emitter, actions: list, layout) -> str:
-    """`successors(s)` as a decision tree over positive precondition atoms."""
+    """`successors(s)` as a decision tree (a trie) over positive precondition atoms.
+
+    Each action's positive atoms, most frequent first, are its path in the trie; an
+    action sits at the end of its path (or at MAX_DEPTH), where only its other
+    conditions remain to test. Building it is linear in the size of the actions."""
     index_of = {s.var: s.index for s in layout.slots}
-    items = []
-    for i, a in enumerate(actions):
-        tests = {index_of[c.var] for c in a.pre if isinstance(c, ir.Var)}
-        items.append((i, tests))
+    keys = [[index_of[c.var] for c in a.pre if isinstance(c, ir.Var)] for a in actions]
+    freq = Counter(i for k in keys for i in k)
+    root: dict = {}
+    for i, k in enumerate(keys):
+        node = root
+        for atom in sorted(set(k), key=lambda t: (-freq[t], t))[:MAX_DEPTH]:
+            node = node.setdefault(atom, {})
+        node.setdefault(None, []).append(i)
     lines = ["def successors(s):", "    out = []"]
 
     def leaf(i, used, indent):
@@ -95,20 +103,15 @@ def successors_source(em: Emitter, actions: list, layout) -> str:
         lines.extend(em.effects(a.effects, indent, a.name) or [])
         lines.append(f"{indent}out.append(({i}, bytes(n)))")
 
-    def tree(group, used, indent, depth):
-        while group:
-            counts = Counter(t for _, tests in group for t in tests - used)
-            if not counts or depth >= MAX_DEPTH:
-                for i, _ in group:
-                    leaf(i, used, indent)
-                return
-            atom, _ = counts.most_common(1)[0]
-            inside = [(i, t) for i, t in group if atom in t]
-            group = [(i, t) for i, t in group if atom not in t]
-            lines.append(f"{indent}if s[{atom}]:")
-            tree(inside, used | {atom}, indent + "    ", depth + 1)
+    def emit(node, used, indent):
+        for i in node.get(None, ()):
+            leaf(i, used, indent)
+        for atom, child in node.items():
+            if atom is not None:
+                lines.append(f"{indent}if s[{atom}]:")
+                emit(child, used | {atom}, indent + "    ")
 
-    tree(items, frozenset(), "    ", 0)
+    emit(root, frozenset(), "    ")
     lines.append("    return out")
     return "\n".join(lines)
 
