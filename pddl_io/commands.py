@@ -6,6 +6,7 @@ import sys
 
 import click
 
+from ..errors import BccError
 from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, goal_option, json_option, progress_enabled
 
 
@@ -53,35 +54,62 @@ def import_group():
 @import_group.command("pddl")
 @click.argument("domain", type=click.Path(dir_okay=False))
 @click.argument("problem", type=click.Path(dir_okay=False))
-@click.option("--solver", default="astar", show_default=True, help="A bcc solver (see `bcc solvers`).")
+@click.option("--solver", default="astar", show_default=True, help="A bcc solver (see `bcc solvers`), or fd.")
+@click.option("--heuristic", default=None, help="Informed solvers: the heuristic (see `bcc solve --help`).")
 @click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS",
-              help="Stop the search after this many seconds.")
+              help="Stop after this many seconds (reading, grounding and search together).")
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop the search after storing this many states.")
+@click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB",
+              help="Stop when the process uses this much memory [default: half the RAM].")
+@click.option("--fd-search", metavar="CONFIG", default=None, help="fd: Fast Downward search [default: astar(lmcut())].")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write the plan to FILE, one action a line (atomically).")
 @json_option
-def import_pddl_cmd(domain, problem, solver, time_limit, max_states, output, as_json):
-    """Compile a STRIPS PDDL DOMAIN + PROBLEM into a bcc model and solve it.
+def import_pddl_cmd(domain, problem, solver, heuristic, time_limit, max_states, max_memory, fd_search, output, as_json):
+    """Compile a PDDL DOMAIN + PROBLEM with bcc's own front-end and solve it.
 
-    The plan is printed in PDDL form, one `(action arg ...)` a line."""
+    The plan is printed in PDDL form, one `(action arg ...)` a line; its cost is the sum
+    of the actions' costs (`:action-costs`)."""
     from ..atomic import write_text
     from ..solvers import Budget, get_solver
-    from .importer import import_pddl
-    model = import_pddl(domain, problem)
+    from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
     default = Budget.default()
-    budget = Budget(max_states=max_states, time_limit=time_limit, max_memory_mb=default.max_memory_mb)
-    progress = progress_enabled()
-    result = get_solver(solver)(model, budget, progress=progress)
-    if progress:
-        click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+    budget = Budget(max_states=max_states, time_limit=time_limit,
+                    max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
+    deadline = Deadline(budget)
+    model = None
+    try:
+        with hard_limits(budget):
+            from .importer import import_pddl
+            model = import_pddl(domain, problem)
+            solve = get_solver(solver)
+            if output:
+                from ..atomic import check_writable
+                check_writable(output)
+            options = {}
+            if heuristic is not None:
+                options["heuristic"] = heuristic
+            if fd_search is not None:
+                if solver != "fd":
+                    raise BccError("--fd-search applies to the fd solver only")
+                options["search"] = fd_search
+            progress = progress_enabled()
+            result = solve(model, deadline.remaining(), progress=progress, **options)
+            if progress:
+                click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+    except BudgetExceeded as exc:
+        result = exceeded_result(solver, exc.which, deadline.elapsed())
     if output and result.solved:
         write_text(output, "".join(a + "\n" for a in result.plan))
+    report = model.report if model is not None else {}
     if as_json:
-        emit_json({"problem": model.name, "atoms": model.report["atoms"],
-                   "grounded_actions": model.report["grounded_actions"], **result.to_json()})
+        emit_json({"problem": model.name if model else problem, "atoms": report.get("atoms"),
+                   "grounded_actions": report.get("grounded_actions"), "action_costs": report.get("action_costs"),
+                   **result.to_json()})
     elif result.solved:
-        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, "
-                   f"{model.report['grounded_actions']} grounded actions, {model.report['atoms']} atoms")
+        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {len(result.plan)} steps, "
+                   f"{result.expanded:,} expanded, {report['grounded_actions']} grounded actions, "
+                   f"{report['atoms']} atoms")
         for a in result.plan:
             click.echo(a)
     else:

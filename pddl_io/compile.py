@@ -170,7 +170,7 @@ def action_functions(a) -> tuple:
     return apply, why
 
 
-def to_model(task: GroundTask, path: str, report: dict):
+def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
     from ..model import Grid, Model, Variable
     layout, var_of, actions, goal = to_ir(task)
     ns, source = build_functions(layout, actions, goal)
@@ -187,4 +187,4 @@ def to_model(task: GroundTask, path: str, report: dict):
         variables=tuple(Variable(v.owner, i, 0, 1, "bool") for i, v in enumerate(var_of)),
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),
         goal_positions=None, report=report, source=source, search_actions=tuple(range(len(actions))),
-        lazy={"ground_task": lambda: task, "ir": lambda: (actions, goal)})
+        lazy={"ground_task": lambda: task, "ir": lambda: (actions, goal), "pddl_files": lambda: files})

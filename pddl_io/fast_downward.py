@@ -60,7 +60,7 @@ class FdRun:
 
 
 def run(domain_file: str, problem_file: str, search: str | None = None, time_limit: float | None = None,
-        memory_mb: float | None = None) -> FdRun:
+        memory_mb: float | None = None, full_names: bool = False) -> FdRun:
     """Run Fast Downward (translate + search) on two PDDL files."""
     search = search or os.environ.get("BCC_FD_SEARCH") or DEFAULT_SEARCH
     with tempfile.TemporaryDirectory(prefix="bcc-fd-") as tmp:
@@ -75,7 +75,7 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
         proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True)
         seconds = time.perf_counter() - start
         if proc.returncode == 0 and os.path.exists(plan_file):
-            plan, cost = _read_plan(plan_file)
+            plan, cost = _read_plan(plan_file, full_names)
             return FdRun(True, plan, cost, seconds, "solved", "")
         if proc.returncode in (11, 12):
             return FdRun(False, [], None, seconds, "no_solution", "no plan exists (Fast Downward proved it)")
@@ -87,7 +87,26 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
                      f"Fast Downward failed (exit {proc.returncode}): {' | '.join(tail)}")
 
 
-def _read_plan(path: str):
+def _solve_files(model, budget, files, search, start):
+    """A model imported from PDDL: Fast Downward reads the very files bcc read, and its
+    plan's steps are the model's action names (`(pick ball1 rooma left)`)."""
+    from ..solvers.base import Result
+    left = None if budget.time_limit is None else max(1.0, budget.time_limit - (time.perf_counter() - start))
+    fd = run(files[0], files[1], search, left, budget.max_memory_mb, full_names=True)
+    seconds = round(time.perf_counter() - start, 6)
+    if fd.status == "error":
+        raise BccError(fd.message)
+    if not fd.solved:
+        return Result("fd", False, fd.status, seconds=seconds, message=fd.message,
+                      budget="time_limit" if fd.status == "budget" else None)
+    costs = dict(zip(model.action_names, model.action_costs))
+    known = all(a in costs for a in fd.plan)
+    cost = sum(costs[a] for a in fd.plan) if known else fd.cost
+    return Result("fd", True, "solved", plan=fd.plan, cost=cost, seconds=seconds,
+                  message=f"Fast Downward on the PDDL files, search {search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")
+
+
+def _read_plan(path: str, full_names: bool = False):
     ops, cost = [], None
     for line in Path(path).read_text().splitlines():
         line = line.strip()
@@ -95,7 +114,7 @@ def _read_plan(path: str):
             if "cost =" in line:
                 cost = int(line.split("cost =")[1].split()[0])
         elif line:
-            ops.append(line.strip("()").split()[0])
+            ops.append("(" + " ".join(line.strip("()").lower().split()) + ")" if full_names else line.strip("()").split()[0])
     return ops, cost
 
 
@@ -109,6 +128,9 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
     from .writer import domain_text, problem_text
     driver()  # fail early, with the install hint
     start = time.perf_counter()
+    files = model.data("pddl_files")
+    if files is not None:
+        return _solve_files(model, budget, files, search, start)
     task = build_task(model)
     with tempfile.TemporaryDirectory(prefix="bcc-pddl-") as tmp:
         dom, prob = os.path.join(tmp, "domain.pddl"), os.path.join(tmp, "problem.pddl")

@@ -27,7 +27,7 @@ def import_pddl(domain: str, problem: str, max_actions: int | None = None):
               "atoms": len(task.atoms), "grounded_actions": len(task.actions),
               "action_costs": task.uses_costs, **task.stats,
               "files": {"domain": str(Path(domain)), "problem": str(Path(problem))}}
-    model = to_model(task, problem, report)
+    model = to_model(task, problem, report, (domain, problem))
     report["seconds"] = {"parse": round(parsed - start, 4), "ground": round(grounded - parsed, 4),
                          "compile": round(time.perf_counter() - grounded, 4)}
     return model

@@ -55,6 +55,10 @@ def read_sexpr(path: str) -> list:
         if exc.token.type == "$END":
             line, col = _last_open(text)
             raise BccError("this '(' is never closed", path, line, col) from None
+        early = _early_close(text)
+        if early:
+            raise BccError("this ')' closes the file's first list, but more text follows: one ')' too many "
+                           "before it", path, *early) from None
         raise BccError(f"unexpected {exc.token.value!r}: a ')' closes no '('", path, exc.line, exc.column) from None
     except UnexpectedEOF:
         line, col = _last_open(text)
@@ -63,22 +67,56 @@ def read_sexpr(path: str) -> list:
         raise BccError("cannot read PDDL", path, getattr(exc, "line", None), getattr(exc, "column", None)) from None
 
 
+ACTION_PARTS = {":parameters", ":precondition", ":effect"}
+SECTIONS = {":action", ":durative-action", ":derived", ":predicates", ":functions", ":types", ":constants",
+            ":requirements", ":objects", ":init", ":goal", ":metric", ":domain"}
+
+
+def _early_close(text: str) -> tuple[int, int] | None:
+    """The ')' that closes the first top-level list when lists still follow it."""
+    import re
+    depth, closed_at = 0, None
+    for m in re.finditer(r";[^\n]*|\(|\)", text):
+        tok = m.group()
+        if tok == "(":
+            if closed_at is not None:
+                return closed_at
+            depth += 1
+        elif tok == ")":
+            depth -= 1
+            if depth == 0 and closed_at is None:
+                line = text.count("\n", 0, m.start()) + 1
+                closed_at = (line, m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1)
+    return None
+
+
 def _last_open(text: str) -> tuple[int, int]:
-    """Line and column of the outermost '(' still open at the end of `text`."""
-    stack = []
-    line, col = 1, 1
-    in_comment = False
-    for ch in text:
-        if in_comment:
-            in_comment = ch != "\n"
-        elif ch == ";":
-            in_comment = True
-        elif ch == "(":
-            stack.append((line, col))
-        elif ch == ")" and stack:
-            stack.pop()
-        if ch == "\n":
-            line, col = line + 1, 1
-        else:
-            col += 1
-    return stack[0] if stack else (line, col)
+    """Where a ')' is missing: the '(' still open when a section or an action's part
+    (`:effect`) starts inside it, else the innermost '(' open at the end of `text`."""
+    import re
+    stack: list = []         # [line, column, head] of each open list
+    expect_head = False
+    for m in re.finditer(r";[^\n]*|\(|\)|[^\s()]+|\n", text):
+        tok = m.group()
+        if tok[0] == ";" or tok == "\n":
+            continue
+        line = text.count("\n", 0, m.start()) + 1
+        col = m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1
+        if tok == "(":
+            stack.append([line, col, None])
+            expect_head = True
+            continue
+        if tok == ")":
+            if stack:
+                stack.pop()
+            expect_head = False
+            continue
+        tok = tok.lower()
+        if expect_head:
+            stack[-1][2] = tok
+            expect_head = False
+            if tok in SECTIONS and len(stack) > 2:
+                return tuple(stack[-2][:2])
+        elif tok in ACTION_PARTS and stack and stack[-1][2] not in (":action", ":durative-action"):
+            return tuple(stack[-1][:2])
+    return tuple(stack[-1][:2]) if stack else (1, 1)

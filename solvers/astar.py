@@ -29,6 +29,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     meter = Meter(budget, progress)
     switching = heuristic == "auto"
     used = "manhattan" if switching else heuristic
+    if switching and model.goal_positions is None and model.data("pattern_database") is None:
+        switching, used = False, "blind"   # no agent position (e.g. imported PDDL): say what runs
     h = HEURISTICS[used](model)
     start = model.initial
     h0 = h(start)

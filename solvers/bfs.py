@@ -1,5 +1,8 @@
 """Breadth-first search: optimal when every action costs the same (unit costs).
 
+With differing costs it finds a plan of fewest steps; its reported cost is still the
+plan's true sum of costs, and its message says it may not be the cheapest.
+
 The goal test runs when a state is generated, one layer earlier than at expansion;
 states in which the episode fails (e.g. the agent died) are never expanded.
 """
@@ -34,7 +37,10 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
             parents[nxt] = (state, action)
             if is_goal(nxt):
                 plan, cost = extract_plan(model, parents, nxt)
-                return meter.finish(Result("bfs", True, "solved", plan, cost, expanded, generated, len(parents)))
+                note = "" if len(set(model.action_costs)) <= 1 else \
+                    "fewest steps; actions' costs differ, so a cheaper plan may exist (astar finds it)"
+                return meter.finish(Result("bfs", True, "solved", plan, cost, expanded, generated, len(parents),
+                                           message=note))
             if not is_failure(nxt):
                 frontier.append(nxt)
     return meter.finish(Result("bfs", False, "no_solution", expanded=expanded, generated=generated,
