@@ -39,7 +39,7 @@ GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
 PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md",
          "learning-curves.md"]
-NEEDS = {"pddl.md": "unified_planning"}  # pages whose commands need an optional extra: the module it brings
+NEEDS: dict = {}  # pages whose commands need an optional extra: page -> the module it brings
 
 FENCE = re.compile(r"^```([^\n`]*)\n(.*?)^```[ \t]*$", re.M | re.S)
 FILE_MARK = re.compile(r"<!--\s*(file|append):\s*(\S+)\s*-->\s*\Z")
