@@ -1,12 +1,12 @@
 """Generate manipulation dungeons: three rooms in a row, stones to carry into the blue one.
 
-`generate_manipulation(stones)` lays out a red, a green and a blue room (interiors 4 x 5,
-double wool walls with a door between neighbours), the agent in the green room facing
+`generate_manipulation(stones)` lays out a red, a green and a blue room (interiors 3 x 3,
+one wool wall between neighbours with a door in it), the agent in the green room facing
 north with the pickaxe in slot 0, and `stones` burlap stones (`M`, a stone at foot level)
 spread over the red and green rooms. The goal is "every stone in the blue room": no
 stone outside the blue room, and none left in the agent's hands. Every instance is
-solvable: mine the stones, walk into the blue room and place them there (its 20 cells
-hold all 8 stones the generator allows).
+solvable: mine the stones, walk into the blue room and place them there (its 9 cells
+hold all 8 stones the generator allows: fill it from the far side, the last from the door).
 
 The same arguments always give the same text.
 """
@@ -17,9 +17,11 @@ import json
 from .errors import BccError
 
 MAX_STONES = 8
-# Stone cells (x, z), alternating between the red room (x 1..4) and the green room
-# (x 7..10), off the door row z = 3 and off the agent's start (8, 3).
-STONE_CELLS = [(2, 1), (9, 1), (3, 5), (8, 5), (1, 2), (10, 2), (4, 4), (7, 4)]
+WIDTH, DEPTH = 13, 5
+START = (6, 2)
+# Stone cells (x, z), alternating between the red room (x 1..3) and the green room
+# (x 5..7), in corners so that no stone closes a door (x 4 and 8, z 2).
+STONE_CELLS = [(1, 1), (7, 1), (3, 3), (5, 3), (1, 3), (7, 3), (3, 1), (5, 1)]
 
 GOAL = ("not agentHasBlock(agent, burlap_stone) and "
         "forall b in block . (b.blockType != burlap_stone or blockInRoom(b, blue))")
@@ -43,23 +45,23 @@ FOOTER = '''agent:
 inventory:
   - {item: diamond_pickaxe, count: 1}
 rooms:
-  - {name: red, color: red, x: [0, 5], z: [0, 6]}
-  - {name: green, color: green, x: [6, 11], z: [0, 6]}
-  - {name: blue, color: blue, x: [12, 17], z: [0, 6]}
+  - {name: red, color: red, x: [0, 4], z: [0, 4]}
+  - {name: green, color: green, x: [4, 8], z: [0, 4]}
+  - {name: blue, color: blue, x: [8, 12], z: [0, 4]}
 '''
 
 
 def room_map(stones: int) -> list[str]:
     rows = []
-    for z in range(7):
+    for z in range(DEPTH):
         row = []
-        for x in range(18):
-            room = "r" if x <= 5 else "g" if x <= 11 else "b"
-            wall = z in (0, 6) or x in (0, 5, 6, 11, 12, 17)
-            door = z == 3 and x in (5, 6, 11, 12)
+        for x in range(WIDTH):
+            room = "r" if x < 4 else "g" if x < 8 else "b"
+            wall = z in (0, DEPTH - 1) or x in (0, 4, 8, WIDTH - 1)
+            door = z == DEPTH // 2 and x in (4, 8)
             row.append(room if wall and not door else ".")
         rows.append(row)
-    rows[3][8] = "S"
+    rows[START[1]][START[0]] = "S"
     for x, z in STONE_CELLS[:stones]:
         rows[z][x] = "M"
     return ["".join(r) for r in rows]
