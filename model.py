@@ -66,10 +66,10 @@ class Model:
     search_actions: tuple = ()                 # the actions `successors` generates (irrelevant ones pruned)
     lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
 
-    def data(self, name: str):
+    def data(self, name: str, **options):
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
         make = self.lazy.get(name)
-        return make() if make else None
+        return make(**options) if make else None
 
     def apply(self, action: int, state: bytes) -> bytes | None:
         return self.apply_fns[action](state)

@@ -14,7 +14,7 @@ import numpy as np
 from ..errors import BccError
 from ..model import Grid, Model, Variable
 from . import ir
-from . import patterns
+from . import patterns, relaxed
 from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
@@ -77,6 +77,19 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     def pattern_database():
         return patterns.build(layout, actions, search, goal_ir, reach, n_values, position_vars, initial)
 
+    built: dict = {}
+
+    def relaxed_task(time_limit: float | None = None):
+        """The delete-relaxed view (relaxed.py), built once; None if it exceeds its limits."""
+        if "task" not in built:
+            try:
+                built["task"] = relaxed.build(layout, actions, search, goal_ir, reach, n_values, initial, time_limit)
+            except relaxed.RelaxedTooBig as exc:
+                if "time" in str(exc):
+                    return None  # another call, with more time, may still build it
+                built["task"] = None
+        return built["task"]
+
     report = {
         "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
         "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
@@ -108,7 +121,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
         position=position, position_static=static_pos, goal_positions=goal_positions,
         report=report, source=source, display=_display(dungeon, layout),
-        search_actions=tuple(search), lazy={"pattern_database": pattern_database})
+        search_actions=tuple(search), lazy={"pattern_database": pattern_database,
+                                                    "relaxed_task": relaxed_task})
 
 
 def _goal(dungeon: Dungeon, goal: str | None) -> Expr:

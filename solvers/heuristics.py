@@ -66,4 +66,18 @@ def pdb(model: Model):
     return lambda s: table[db.index_of(s)]
 
 
-HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind}
+def _relaxed(kind: str):
+    def make(model: Model, time_limit: float | None = None):
+        from .relaxed_heuristics import relaxed_of
+        r = relaxed_of(model, time_limit)
+        if r is None:  # the relaxed view is too big for its limits: search blind, say so
+            h = blind(model)
+            h.fallback = "blind"
+            return h
+        return getattr(r, kind)
+    make.__doc__ = f"{kind} on the relaxed view of the model (solvers/relaxed_heuristics.py)"
+    return make
+
+
+HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind,
+              "hmax": _relaxed("hmax"), "hadd": _relaxed("hadd"), "hff": _relaxed("hff"), "lmcut": _relaxed("lmcut")}

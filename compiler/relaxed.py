@@ -1,0 +1,515 @@
+"""A delete-relaxed view of a compiled model, built from the grounded IR (no domain words).
+
+Facts are `group = values` and `cell (x, y, z) = value`. A group is a set of state
+variables that some action writes side by side (a position's x and z), so a relaxed
+plan cannot mix coordinates of two places; cells are those of the mutable layers, static
+cells and attributes being constants already. Each grounded action is split by its
+*context*, the values of the variables that choose which cells and keyed objects it
+touches (e.g. a position, a facing, a selected slot). In a context, expressions are
+partially evaluated (relaxed_eval.py): each precondition becomes facts, a disjunction
+becomes an auxiliary fact with one zero-cost achiever per alternative, and the effects
+are split by the atoms they read (a decision tree: exact), or, when that tree is too big,
+the action adds an auxiliary "fired" fact and each conditional effect becomes a zero-cost
+operator of its own. Everything over-approximates: a relaxed operator's preconditions
+hold whenever the action's do, and it adds at least what the action makes true; so hmax
+and LM-cut on this view stay admissible. Operators that cannot fire from the start, or
+add nothing the goal needs, are dropped (relevance, as pyperplan and Fast Downward do).
+"""
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from dataclasses import dataclass, field
+
+from . import ir
+from .relaxed_eval import BAD, CellAtom, Drop, Evaluator, Fail, TooBig, conjuncts, residual, residual_effects
+
+MAX_GROUP = 4096        # largest product of value ranges a group of variables may have
+MAX_CONTEXTS = 200_000  # contexts (over all actions) before the view gives up
+SPLIT_LIMIT = 4         # leaves of an action's effect decision tree before effects are fired apart
+COND_LIMIT = 4096       # leaves of one condition's decision tree before it is dropped (relaxed)
+
+
+class RelaxedTooBig(Exception):
+    """The relaxed view would exceed its limits (contexts, time); heuristics fall back."""
+
+
+@dataclass
+class RelaxedTask:
+    """Facts 0..n_facts-1; operator i: pre[i] (facts), add[i] (facts), cost[i], action[i]
+    (the grounded action it relaxes, or -1 for an auxiliary zero-cost operator)."""
+    n_facts: int
+    pre: list
+    add: list
+    cost: list
+    action: list
+    goal: tuple                      # facts; None when the goal can never hold
+    labels: list                     # a readable name per fact (debugging, tests)
+    reader: "StateReader"
+    stats: dict = field(default_factory=dict)
+
+    def state_facts(self, state) -> list:
+        return self.reader.facts(state)
+
+
+class StateReader:
+    """The one place that reads a state's variable values and cell contents (the state
+    layout belongs to compiler/layout.py; only this class knows how to read it)."""
+
+    def __init__(self, layout, groups, fact_base, strides, cell_base, n_values):
+        self.groups = [[layout.by_var[v].index for v in g] for g in groups]
+        self.bases, self.strides = fact_base, strides
+        self.grid_base, self.cell_base, self.n_values = layout.grid_base, cell_base, n_values
+        self.n_cells = len(layout.layers) * layout.width * layout.depth
+
+    def facts(self, state) -> list:
+        out = []
+        for idxs, base, strides in zip(self.groups, self.bases, self.strides):
+            f = base
+            for i, st in zip(idxs, strides):
+                f += state[i] * st
+            out.append(f)
+        gb, cb, nv = self.grid_base, self.cell_base, self.n_values
+        out.extend(cb + k * nv + state[gb + k] for k in range(self.n_cells))
+        return out
+
+
+def _groups(layout, actions) -> list:
+    """Variables written side by side in one effect block are merged (union-find), as long
+    as the product of their ranges stays within MAX_GROUP."""
+    parent = {s.var: s.var for s in layout.slots}
+
+    def find(v):
+        while parent[v] is not v:
+            parent[v] = parent[parent[v]]
+            v = parent[v]
+        return v
+
+    def size(root):
+        n = 1
+        for s in layout.slots:
+            if find(s.var) is root:
+                n *= s.hi - s.lo + 1
+        return n
+
+    def blocks(effects):
+        yield effects
+        for e in effects:
+            if isinstance(e, ir.When):
+                yield from blocks(e.then)
+                yield from blocks(e.orelse)
+
+    for a in actions:
+        lets = {loc.name: value for loc, value in a.lets}
+        for block in blocks(a.effects):
+            sets = [e for e in block if isinstance(e, ir.SetVar) and e.var in parent]
+            written = {e.var for e in sets}
+            # Only a move-like block is merged: each new value is computed from an old value
+            # of the block's own variables (x = x + dx, z = z + dz).
+            if len(sets) < 2 or not all(_reads_vars(e.value, lets) & written for e in sets):
+                continue
+            vs = [e.var for e in sets]
+            for u, v in zip(vs, vs[1:]):
+                ru, rv = find(u), find(v)
+                if ru is not rv and size(ru) * size(rv) <= MAX_GROUP:
+                    parent[rv] = ru
+    out: dict = {}
+    for s in layout.slots:
+        out.setdefault(find(s.var), []).append(s.var)
+    return list(out.values())
+
+
+def _reads_vars(node, lets, acc=None) -> set:
+    acc = set() if acc is None else acc
+    if isinstance(node, ir.Var):
+        acc.add(node.var)
+    elif isinstance(node, ir.Local) and node.name in lets:
+        _reads_vars(lets[node.name], lets, acc)
+    for c in ir.children(node):
+        _reads_vars(c, lets, acc)
+    return acc
+
+
+def _context_vars(action) -> set:
+    """State variables read where they choose a cell or a keyed object (through lets)."""
+    lets = {loc.name: value for loc, value in action.lets}
+    out: set = set()
+
+    def reads(node, acc):
+        if isinstance(node, ir.Var):
+            acc.add(node.var)
+        elif isinstance(node, ir.Local) and node.name in lets:
+            reads(lets[node.name], acc)
+        for c in ir.children(node):
+            reads(c, acc)
+        return acc
+
+    def walk(node):
+        if isinstance(node, ir.Local) and node.name in lets:
+            walk(lets[node.name])
+        if isinstance(node, ir.Cell):
+            for c in (node.x, node.y, node.z):
+                reads(c, out)
+        elif isinstance(node, ir.VarAt):
+            reads(node.key, out)
+        for c in ir.children(node):
+            walk(c)
+
+    def walk_effects(effects):
+        for e in effects:
+            if isinstance(e, ir.When):
+                walk(e.cond)
+                walk_effects(e.then)
+                walk_effects(e.orelse)
+            elif isinstance(e, ir.SetVar):
+                walk(e.value)
+            elif isinstance(e, ir.SetVarAt):
+                reads(e.key, out)
+                walk(e.key)
+                walk(e.value)
+            elif isinstance(e, ir.SetCell):
+                for c in (e.x, e.y, e.z):
+                    reads(c, out)
+                    walk(c)
+                walk(e.value)
+
+    for c in action.pre:
+        walk(c)
+    walk_effects(action.effects)
+    return out
+
+
+class Builder:
+    def __init__(self, layout, actions, search, goal, reach, n_values, deadline):
+        self.L, self.actions, self.search, self.goal = layout, actions, search, goal
+        self.reach, self.n_values, self.deadline = reach, n_values, deadline
+        self.groups = _groups(layout, [actions[i] for i in search])
+        self.group_of = {}
+        for g, members in enumerate(self.groups):
+            for pos, v in enumerate(members):
+                self.group_of[v] = (g, pos)
+        # Fact numbering: each group gets the full product of its members' ranges.
+        self.bases, self.strides, n = [], [], 0
+        for members in self.groups:
+            slots = [layout.by_var[v] for v in members]
+            strides, acc = [], 1
+            for s in reversed(slots):
+                strides.append(acc)
+                acc *= s.hi - s.lo + 1
+            self.strides.append(list(reversed(strides)))
+            self.bases.append(n)
+            n += acc
+        self.area = layout.width * layout.depth
+        self.cell_base = n
+        n += len(layout.layers) * self.area * n_values
+        self.n_facts = n
+        self.labels: dict = {}
+        self.group_domains = [self._group_domain(members) for members in self.groups]
+        written = reach.written
+        self.cell_domains: dict = {}
+        for li, y in enumerate(layout.layers):
+            extra = written.get(y, frozenset())
+            for k in range(self.area):
+                static = layout.static_grid[y * self.area + k]
+                self.cell_domains[li * self.area + k] = sorted({static} | extra)
+        self.ev = Evaluator(layout, self.group_of, self.domain)
+        self.ev.group_members, self.ev.n_values = self.groups, n_values
+        self.ops: dict = {}          # (pre, add, cost, action) -> None (ordered set)
+        self.or_facts: dict = {}     # frozenset of minterms -> aux fact
+        self.fired: dict = {}        # (action, residual effects) -> aux fact
+
+    # ---- facts -------------------------------------------------------------------------
+    def _group_domain(self, members) -> list:
+        sets = [sorted(self.reach.values.get(v, range(self.L.by_var[v].lo, self.L.by_var[v].hi + 1)))
+                for v in members]
+        return list(itertools.product(*sets))
+
+    def domain(self, atom) -> list:
+        kind, key = atom
+        return self.group_domains[key] if kind == "g" else self.cell_domains[key]
+
+    def fact(self, atom, value) -> int:
+        kind, key = atom
+        if kind == "g":
+            members = self.groups[key]
+            f = self.bases[key]
+            for v, val, st in zip(members, value, self.strides[key]):
+                f += (val - self.L.by_var[v].lo) * st
+            if f not in self.labels:
+                self.labels[f] = ", ".join(f"{v.label}={val}" for v, val in zip(members, value))
+            return f
+        f = self.cell_base + key * self.n_values + value
+        if f not in self.labels:
+            layer, k = divmod(key, self.area)
+            z, x = divmod(k, self.L.width)
+            self.labels[f] = f"cell({x}, {self.L.layers[layer]}, {z})={value}"
+        return f
+
+    def new_fact(self, label: str) -> int:
+        f = self.n_facts
+        self.n_facts += 1
+        self.labels[f] = label
+        return f
+
+    def minterm_facts(self, minterm) -> tuple:
+        return tuple(sorted(self.fact(a, v) for a, v in minterm))
+
+    def condition(self, minterms) -> tuple:
+        """Facts whose conjunction stands for a disjunction of minterms."""
+        if len(minterms) == 1:
+            return self.minterm_facts(next(iter(minterms)))
+        key = frozenset(minterms)
+        f = self.or_facts.get(key)
+        if f is None:
+            f = self.new_fact(f"or#{len(self.or_facts)}")
+            self.or_facts[key] = f
+            for m in minterms:
+                self.op(self.minterm_facts(m), (f,), 0, -1)
+        return (f,)
+
+    def op(self, pre, add, cost, action) -> None:
+        add = tuple(sorted(set(add) - set(pre)))
+        if add:
+            self.ops[(tuple(sorted(set(pre))), add, cost, action)] = None
+
+    # ---- conditions ----------------------------------------------------------------------
+    def clusters(self, conds, env, limit=COND_LIMIT):
+        """Minterm sets of the conjuncts, those that share atoms evaluated together.
+        None if the conjunction is false; conjuncts too big to enumerate are dropped."""
+        parts = []
+        for c in conds:
+            try:
+                leaves = self.ev.branch(lambda e, c=c: self.ev.truth(c, e), env, limit)
+            except (TooBig, Drop):
+                continue
+            true = [m for m, r in leaves if r]
+            if not true:
+                return None
+            atoms = {a for m, _ in leaves for a, _ in m}
+            if atoms:
+                parts.append(([c], atoms, true))
+        merged = True
+        while merged:  # conjuncts reading a common atom are enumerated jointly
+            merged = False
+            for i, j in itertools.combinations(range(len(parts)), 2):
+                if parts[i][1] & parts[j][1]:
+                    conds_ij = parts[i][0] + parts[j][0]
+                    try:
+                        leaves = self.ev.branch(lambda e: all(self.ev.truth(c, e) for c in conds_ij), env, limit)
+                    except (TooBig, Drop):
+                        continue
+                    true = [m for m, r in leaves if r]
+                    if not true:
+                        return None
+                    parts[i] = (conds_ij, parts[i][1] | parts[j][1], true)
+                    del parts[j]
+                    merged = True
+                    break
+        return [[frozenset(m) for m in p[2]] for p in parts]
+
+    # ---- actions -----------------------------------------------------------------------
+    def build_action(self, index: int, contexts_left: list) -> None:
+        a = self.actions[index]
+        lets = {loc.name: value for loc, value in a.lets}
+        ctx_groups = sorted({self.group_of[v][0] for v in _context_vars(a) if v in self.group_of})
+        domains = [self.group_domains[g] for g in ctx_groups]
+        n = math.prod(len(d) for d in domains)
+        contexts_left[0] -= n
+        if contexts_left[0] < 0:
+            raise RelaxedTooBig(f"more than {MAX_CONTEXTS} action contexts")
+        for k, values in enumerate(itertools.product(*domains)):
+            if k % 256 == 0 and time.perf_counter() > self.deadline:
+                raise RelaxedTooBig("the time budget ran out while building the relaxed view")
+            pins = {}
+            for g, vals in zip(ctx_groups, values):
+                pins.update(zip(self.groups[g], vals))
+            self.build_context(index, a, lets, ctx_groups, values, pins)
+
+    def build_context(self, index, a, lets, ctx_groups, values, pins) -> None:
+        cells: dict = {}
+        memo: dict = {}
+        pre = []
+        for c in a.pre:
+            try:
+                r = residual(c, self.ev, pins, cells, lets, memo)
+            except Drop:
+                continue  # relaxed away: fewer preconditions over-approximate
+            if r is BAD or r == ir.FALSE:
+                return
+            pre.extend(conjuncts(r))
+        ctx_facts = [self.fact(("g", g), v) for g, v in zip(ctx_groups, values)]
+        parts = self.clusters(pre, {})
+        if parts is None:
+            return
+        pre_facts = list(ctx_facts)
+        narrowed: dict = {}
+        for minterms in parts:
+            pre_facts.extend(self.condition(minterms))
+            common = set.intersection(*({atom for atom, _ in m} for m in minterms))
+            for atom in common:
+                narrowed[atom] = {dict(m)[atom] for m in minterms}
+        # Atoms the preconditions pin to one value are constants for the effects.
+        pins2, cells2 = dict(pins), dict(cells)
+        for (kind, key), vals in narrowed.items():
+            if len(vals) == 1:
+                (v,) = vals
+                if kind == "g":
+                    pins2.update(zip(self.groups[key], v))
+                else:
+                    cells2[key] = v
+        try:
+            effects = residual_effects(a.effects, self.ev, pins2, cells2, lets, {})
+        except Drop as exc:
+            raise RelaxedTooBig(f"cannot relax the effects of {a.name}: {exc}") from None
+        if effects is BAD:
+            return
+        try:
+            leaves = self.ev.branch(lambda e: self.ev.simulate(effects, e, pins2), {}, SPLIT_LIMIT,
+                                    {k: sorted(v) for k, v in narrowed.items() if len(v) > 1})
+            for minterm, writes in leaves:
+                if writes is None:
+                    continue
+                adds = [self.fact(atom, v) for atom, v in writes.items()]
+                self.op(pre_facts + list(self.minterm_facts(minterm)), adds, a.cost, index)
+            return
+        except (TooBig, Drop):
+            pass
+        # Too many cases: each written atom gets its own component, fired apart and
+        # shared by every context whose component reads the same after folding.
+        try:
+            atoms = self.ev.written_atoms(effects, set())
+        except Drop as exc:
+            raise RelaxedTooBig(str(exc)) from None
+        adds = []
+        for atom in sorted(atoms):
+            comp = _component(effects, atom, self.ev)
+            try:
+                leaves = self.ev.branch(lambda e: self.ev.simulate(comp, e, pins2), {}, 1)
+                if len(leaves) == 1 and not leaves[0][0] and leaves[0][1] is not None:
+                    adds.extend(self.fact(at, v) for at, v in leaves[0][1].items())
+                    continue
+            except (TooBig, Drop, Fail):
+                pass
+            key = (index, atom, comp)
+            f = self.fired.get(key)
+            if f is None:
+                f = self.new_fact(f"fired:{a.name}#{len(self.fired)}")
+                self.fired[key] = f
+                self.fire_effects(comp, f, atom)
+            adds.append(f)
+        self.op(pre_facts, adds, a.cost, index)
+
+    def fire_effects(self, effects, fired: int, atom) -> None:
+        """Zero-cost operators, one per old value of the written atom: `fired` and
+        atom = old add every value the effects may give it (conditions that need other
+        atoms count as true and false: an over-approximation)."""
+        for old in self.domain(atom):
+            new = self.ev.candidates(effects, {atom: old}, atom, {})
+            if new:
+                self.op((fired, self.fact(atom, old)), tuple(self.fact(atom, v) for v in new), 0, -1)
+
+    def build_goal(self):
+        try:
+            r = residual(self.goal, self.ev, {}, {}, {}, {})
+        except Drop:
+            return ()
+        if r is BAD or r == ir.FALSE:
+            return None
+        parts = self.clusters(conjuncts(r), {})
+        if parts is None:
+            return None
+        out = []
+        for minterms in parts:
+            out.extend(self.condition(minterms))
+        return tuple(sorted(set(out)))
+
+
+def _component(effects, atom, ev) -> tuple:
+    """The part of `effects` that may write `atom` (conditions kept, other writes dropped)."""
+    out = []
+    for e in effects:
+        if isinstance(e, ir.When):
+            then, orelse = _component(e.then, atom, ev), _component(e.orelse, atom, ev)
+            if then or orelse:
+                out.append(ir.When(e.cond, then, orelse))
+        elif atom in ev.written_atoms((e,), set()):
+            out.append(e)
+    return tuple(out)
+
+
+def build(layout, actions, search, goal, reach, n_values, initial, time_limit: float | None = None) -> RelaxedTask:
+    """The relaxed view; raises RelaxedTooBig past MAX_CONTEXTS or `time_limit` seconds."""
+    start = time.perf_counter()
+    b = Builder(layout, actions, search, goal, reach, n_values,
+                math.inf if time_limit is None else start + time_limit)
+    left = [MAX_CONTEXTS]
+    for i in search:
+        b.build_action(i, left)
+    goal_facts = b.build_goal()
+    reader = StateReader(layout, b.groups, b.bases, b.strides, b.cell_base, n_values)
+    ops = list(b.ops)
+    built = len(ops)
+    ops = _prune(ops, reader.facts(initial), goal_facts, b.n_facts)
+    task = RelaxedTask(b.n_facts, [o[0] for o in ops], [o[1] for o in ops], [o[2] for o in ops],
+                       [o[3] for o in ops], goal_facts, [b.labels.get(f, f"#{f}") for f in range(b.n_facts)], reader)
+    task.stats = {"facts": b.n_facts, "operators_built": built, "operators": len(ops),
+                  "groups": [[v.label for v in g] for g in b.groups],
+                  "seconds": round(time.perf_counter() - start, 3)}
+    return task
+
+
+def _prune(ops, init_facts, goal, n_facts) -> list:
+    """Keep operators that can fire from the start (relaxed reachability: a fact of any
+    reachable state is reachable in the relaxation) and add a fact the goal may need."""
+    reached = bytearray(n_facts)
+    for f in init_facts:
+        reached[f] = 1
+    waiting: dict = {}
+    missing = []
+    queue = []
+    for i, (pre, add, _, _) in enumerate(ops):
+        missing.append(len(pre))
+        for p in pre:
+            waiting.setdefault(p, []).append(i)
+        if not pre:
+            queue.append(i)
+    for f in init_facts:
+        for i in waiting.get(f, ()):
+            missing[i] -= 1
+            if missing[i] == 0:
+                queue.append(i)
+    fireable = set()
+    while queue:
+        i = queue.pop()
+        if i in fireable:
+            continue
+        fireable.add(i)
+        for f in ops[i][1]:
+            if not reached[f]:
+                reached[f] = 1
+                for j in waiting.get(f, ()):
+                    missing[j] -= 1
+                    if missing[j] == 0:
+                        queue.append(j)
+    if goal is None:
+        return []
+    needed = bytearray(n_facts)
+    for f in goal:
+        needed[f] = 1
+    by_add: dict = {}
+    for i in fireable:
+        for f in ops[i][1]:
+            by_add.setdefault(f, []).append(i)
+    stack = list(goal)
+    relevant = set()
+    while stack:
+        f = stack.pop()
+        for i in by_add.get(f, ()):
+            if i not in relevant:
+                relevant.add(i)
+                for p in ops[i][0]:
+                    if not needed[p]:
+                        needed[p] = 1
+                        stack.append(p)
+    return [ops[i] for i in sorted(relevant)]

@@ -1,0 +1,222 @@
+"""Delete-relaxation heuristics over the model's relaxed view (compiler/relaxed.py).
+
+- `hmax`: the costliest goal fact, each fact costing its costliest precondition plus
+  the operator; admissible and consistent.
+- `hadd`: costs added instead of maxed; informative, not admissible.
+- `hff`: the cost of a relaxed plan read off hadd's best supporters (Hoffmann & Nebel
+  2001); not admissible. Its *preferred actions* (the relaxed plan's first steps, that
+  apply in the state) steer gbfs.
+- `lmcut`: LM-cut (Helmert & Domshlak 2009): repeatedly compute hmax, cut the
+  justification graph in front of the goal, add the cheapest cut operator's cost and
+  discount the cut; admissible, and usually far stronger than hmax.
+
+All share one Dijkstra-like exploration over facts with per-operator counters of
+unreached preconditions. A state is turned into facts by the view's one state reader.
+"""
+from __future__ import annotations
+
+import heapq
+import math
+
+INF = math.inf
+
+
+class Relaxed:
+    """Precomputed indices over a RelaxedTask, and the four heuristics."""
+
+    def __init__(self, task):
+        self.task = task
+        self.n_facts, self.n_ops = task.n_facts, len(task.pre)
+        self.pre, self.add, self.cost, self.action = task.pre, task.add, task.cost, task.action
+        self.pre_of = [[] for _ in range(self.n_facts)]
+        for i, pre in enumerate(self.pre):
+            for p in pre:
+                self.pre_of[p].append(i)
+        self.n_pre = [len(p) for p in self.pre]
+        self.free = [i for i, p in enumerate(self.pre) if not p]
+        self.goal = task.goal
+        self.goal_set = set(task.goal or ())
+        self.achievers = [[] for _ in range(self.n_facts)]
+        for i, add in enumerate(self.add):
+            for f in add:
+                self.achievers[f].append(i)
+        self.preferred: frozenset = frozenset()
+
+    # ---- exploration -------------------------------------------------------------------------
+    def explore(self, init, costs, additive: bool, stop_at_goal: bool):
+        """Fact costs (hmax or hadd), the supporter of each fact, and each fired operator's
+        last-reached (for hmax: costliest) precondition."""
+        cost = [INF] * self.n_facts
+        sup = [-1] * self.n_facts
+        unsat = self.n_pre[:]
+        opv = [0] * self.n_ops
+        pcf = [-1] * self.n_ops
+        heap = []
+        pre_of, add = self.pre_of, self.add
+        for f in init:
+            if cost[f] != 0:
+                cost[f] = 0
+                heap.append((0, f))
+        for i in self.free:
+            c = costs[i]
+            for g in add[i]:
+                if c < cost[g]:
+                    cost[g] = c
+                    sup[g] = i
+                    heap.append((c, g))
+        heapq.heapify(heap)
+        goals_left = len(self.goal_set) if stop_at_goal else -1
+        goal_set = self.goal_set
+        done = bytearray(self.n_facts)
+        pop, push = heapq.heappop, heapq.heappush
+        while heap:
+            c, f = pop(heap)
+            if done[f]:
+                continue
+            done[f] = 1
+            if stop_at_goal and f in goal_set:
+                goals_left -= 1
+                if goals_left == 0:
+                    break
+            for i in pre_of[f]:
+                u = unsat[i] - 1
+                unsat[i] = u
+                if additive:
+                    opv[i] += c
+                elif c > opv[i]:
+                    opv[i] = c
+                if u == 0:
+                    pcf[i] = f
+                    v = opv[i] + costs[i]
+                    for g in add[i]:
+                        if v < cost[g]:
+                            cost[g] = v
+                            sup[g] = i
+                            push(heap, (v, g))
+        return cost, sup, pcf
+
+    def goal_cost(self, cost, additive: bool):
+        if self.goal is None:
+            return INF
+        if not self.goal:
+            return 0
+        values = [cost[g] for g in self.goal]
+        return sum(values) if additive else max(values)
+
+    # ---- heuristics ---------------------------------------------------------------------------
+    def hmax(self, state) -> float:
+        cost, _, _ = self.explore(self.task.state_facts(state), self.cost, False, True)
+        return self.goal_cost(cost, False)
+
+    def hadd(self, state) -> float:
+        cost, _, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
+        return self.goal_cost(cost, True)
+
+    def hff(self, state) -> float:
+        """Relaxed plan cost; sets `self.preferred` to the grounded actions of the plan's
+        operators that apply in `state` (all preconditions reached at cost 0)."""
+        cost, sup, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
+        if self.goal is None or any(cost[g] == INF for g in self.goal):
+            self.preferred = frozenset()
+            return INF
+        plan, stack, seen = set(), [g for g in self.goal if cost[g] > 0], set()
+        while stack:
+            f = stack.pop()
+            if f in seen:
+                continue
+            seen.add(f)
+            i = sup[f]
+            if i < 0 or i in plan:
+                continue
+            plan.add(i)
+            stack.extend(p for p in self.pre[i] if cost[p] > 0)
+        preferred = set()
+        for i in plan:
+            if all(cost[p] == 0 for p in self.pre[i]):
+                preferred.update(self._actions_of(i, cost))
+        self.preferred = frozenset(preferred)
+        return sum(self.cost[i] for i in plan)
+
+    def _actions_of(self, i, cost):
+        """The grounded actions behind operator i (an auxiliary one stands for the actions
+        that fired it, among the operators applicable now)."""
+        if self.action[i] >= 0:
+            return (self.action[i],)
+        out = []
+        for p in self.pre[i]:
+            for j in self.achievers[p]:
+                if self.action[j] >= 0 and self.cost[j] > 0 and all(cost[q] == 0 for q in self.pre[j]):
+                    out.append(self.action[j])
+        return out
+
+    def lmcut(self, state) -> float:
+        init = self.task.state_facts(state)
+        if self.goal is None:
+            return INF
+        if not self.goal:
+            return 0
+        costs = list(self.cost)
+        total = 0
+        goal = self.goal
+        while True:
+            cost, _, pcf = self.explore(init, costs, False, False)
+            gmax = max(goal, key=lambda g: cost[g])
+            if cost[gmax] == INF:
+                return INF
+            if cost[gmax] == 0:
+                return total
+            # Goal zone: facts from which the goal is reached by zero-cost justification edges.
+            zone = {gmax}
+            stack = [gmax]
+            while stack:
+                f = stack.pop()
+                for i in self.achievers[f]:
+                    p = pcf[i]
+                    if costs[i] == 0 and p >= 0 and p not in zone:
+                        zone.add(p)
+                        stack.append(p)
+            # Forward from the state, not entering the zone: operators crossing into it form the cut.
+            by_pcf: dict = {}
+            for i in range(self.n_ops):
+                if pcf[i] >= 0:
+                    by_pcf.setdefault(pcf[i], []).append(i)
+            cut = set()
+            reached = set()
+            stack = []
+            for i in self.free:
+                for g in self.add[i]:
+                    if g in zone:
+                        cut.add(i)
+                    elif g not in reached:
+                        reached.add(g)
+                        stack.append(g)
+            for f in init:
+                if f not in reached and f not in zone:
+                    reached.add(f)
+                    stack.append(f)
+            while stack:
+                f = stack.pop()
+                for i in by_pcf.get(f, ()):
+                    for g in self.add[i]:
+                        if g in zone:
+                            cut.add(i)
+                        elif g not in reached:
+                            reached.add(g)
+                            stack.append(g)
+            m = min(costs[i] for i in cut)
+            if m <= 0:  # cannot happen with a correct cut; guard against an endless loop
+                return total
+            total += m
+            for i in cut:
+                costs[i] -= m
+
+
+def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:
+    """The model's Relaxed heuristics (built once per model), or None when the relaxed
+    view cannot be built within its limits (or `time_limit` seconds)."""
+    task = model.data("relaxed_task", time_limit=time_limit)
+    if task is None:
+        return None
+    if getattr(task, "heuristics", None) is None:
+        task.heuristics = Relaxed(task)
+    return task.heuristics
