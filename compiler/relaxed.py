@@ -54,8 +54,12 @@ class RelaxedTask:
 
 
 class StateReader:
-    """The one place that reads a state's variable values and cell contents (the state
-    layout belongs to compiler/layout.py; only this class knows how to read it)."""
+    """The one place that reads a state's variable values and cell contents. It reads the
+    dense layout of compiler/layout.py (variables, then every mutable-layer cell);
+    `to_dense` turns a state of the model into that layout (identity while states are
+    dense; the model's `dense` once states store only changed cells)."""
+
+    to_dense = None
 
     def __init__(self, layout, groups, fact_base, strides, cell_base, n_values):
         self.groups = [[layout.by_var[v].index for v in g] for g in groups]
@@ -64,6 +68,8 @@ class StateReader:
         self.n_cells = len(layout.layers) * layout.width * layout.depth
 
     def facts(self, state) -> list:
+        if self.to_dense is not None:
+            state = self.to_dense(state)
         out = []
         for idxs, base, strides in zip(self.groups, self.bases, self.strides):
             f = base

@@ -1,4 +1,11 @@
-"""Greedy best-first search: always expand the state with the lowest h. Fast, not optimal."""
+"""Greedy best-first search: always expand the state with the lowest h. Fast, not optimal.
+
+With a heuristic that names *preferred actions* (`hff`: the first steps of its relaxed
+plan), successors reached by them also go to a second open list, and the search
+alternates between the two, giving the preferred list BOOST extra turns each time h
+improves (Fast Downward's dual queue with boosting). Preferred actions only change the
+order of expansion, never which states can be reached, so completeness is kept.
+"""
 from __future__ import annotations
 
 import heapq
@@ -8,20 +15,44 @@ from ..model import Model
 from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
 from .heuristics import HEURISTICS
 
+BOOST = 1000
 
-def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", **options) -> Result:
+
+def preferred_of(h):
+    """A function state -> preferred actions (after h(state)), or None for heuristics without them."""
+    owner = getattr(h, "__self__", None)
+    if owner is not None and getattr(h, "__name__", "") == "hff" and hasattr(owner, "preferred"):
+        return lambda: owner.preferred
+    return None
+
+
+def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", preferred: bool = True,
+          **options) -> Result:
     meter = Meter(budget, progress)
     h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
+    helpful = preferred_of(h) if preferred else None
     start = model.initial
     parents = {start: None}
     h0 = h(start)
     if h0 == math.inf:
         return meter.finish(Result("gbfs", False, "no_solution", stored=1, heuristic=heuristic, initial_h=h0,
                                    message="no plan exists: the goal cannot hold at any reachable position"))
-    heap = [(h0, 0, start)]
+    pref_of = {start: helpful()} if helpful else None
+    queues = [[(h0, 0, start)], []]   # all states; states reached by a preferred action
+    closed = set()
+    turn = boost = 0
+    best = h0
     tie = expanded = generated = 0
-    while heap:
-        _, _, state = heapq.heappop(heap)
+    while queues[0] or queues[1]:
+        if boost > 0 and queues[1]:
+            q, boost = 1, boost - 1
+        else:
+            q = turn if queues[turn] else 1 - turn
+            turn = 1 - turn
+        _, _, state = heapq.heappop(queues[q])
+        if state in closed:
+            continue
+        closed.add(state)
         if model.is_goal(state):
             plan, cost = extract_plan(model, parents, state)
             return meter.finish(Result("gbfs", True, "solved", plan, cost, expanded, generated, len(parents),
@@ -31,6 +62,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
             which = meter.check(expanded, generated, len(parents))
             if which:
                 return budget_result("gbfs", which, meter, expanded, generated, len(parents))
+        prefer = pref_of.pop(state, frozenset()) if pref_of is not None else frozenset()
         for action, nxt in model.successors(state):
             generated += 1
             if nxt in parents or model.is_failure(nxt):
@@ -40,7 +72,13 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
                 continue
             parents[nxt] = (state, action)
             tie += 1
-            heapq.heappush(heap, (hn, tie, nxt))
+            heapq.heappush(queues[0], (hn, tie, nxt))
+            if pref_of is not None:
+                pref_of[nxt] = helpful()
+                if action in prefer:
+                    heapq.heappush(queues[1], (hn, tie, nxt))
+            if hn < best:
+                best, boost = hn, BOOST
     return meter.finish(Result("gbfs", False, "no_solution", expanded=expanded, generated=generated,
                                stored=len(parents), heuristic=heuristic, initial_h=h0,
                                message="no plan exists: every reachable state was explored"))

@@ -218,5 +218,6 @@ def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:
     if task is None:
         return None
     if getattr(task, "heuristics", None) is None:
+        task.reader.to_dense = getattr(model, "dense", None)  # compact states (issue 18) read densely
         task.heuristics = Relaxed(task)
     return task.heuristics

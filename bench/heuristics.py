@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Heuristics benchmark: expansions and time per heuristic, on the manipulation dungeons
+(three rooms, N stones to carry into the blue room) and the reference dungeons.
+
+    python bench/heuristics.py                  # stones 1 2 4, 60 s per run
+    python bench/heuristics.py --stones 1 2 4 8 --time-limit 120
+    python bench/heuristics.py --quick          # stones 1 2, reference grid/bridge, 20 s
+
+Prints a table and writes bench/heuristics.json. Every run is a subprocess of the
+installed `bcc solve --json` (its own memory, its own budget); `relaxed_build_seconds`
+is the time to build the relaxed view once per dungeon (measured apart). Expansions are
+the figure to compare; timings on a shared machine are noisy.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+CONFIGS = [("astar", "blind"), ("astar", "auto"), ("astar", "hmax"), ("astar", "lmcut"),
+           ("gbfs", "hff"), ("gbfs", "hadd"), ("gbfs", "pdb"), ("wastar", "hff")]
+REFERENCE = ["grid", "bridge", "easy_maze", "tough_maze", "four_rooms"]
+
+
+def run(dungeon: str, solver: str, heuristic: str, time_limit: float) -> dict:
+    cmd = ["bcc", "solve", dungeon, "--solver", solver, "--heuristic", heuristic, "--json",
+           "--time-limit", str(time_limit)]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit + 60)
+    wall = time.perf_counter() - start
+    try:
+        data = json.loads(proc.stdout)
+    except json.JSONDecodeError:
+        data = {"solved": False, "status": f"exit {proc.returncode}", "message": proc.stderr.strip()[-200:]}
+    return {"solved": data.get("solved"), "status": data.get("status"), "cost": data.get("cost"),
+            "expanded": data.get("expanded"), "seconds": data.get("seconds"), "wall_seconds": round(wall, 3),
+            "initial_h": data.get("initial_h"), "budget": data.get("budget")}
+
+
+def build_seconds(dungeon: str) -> dict:
+    from bcc.compiler import compile_dungeon
+    model = compile_dungeon(dungeon)
+    start = time.perf_counter()
+    task = model.data("relaxed_task")
+    return {"relaxed_build_seconds": round(time.perf_counter() - start, 3),
+            "relaxed": None if task is None else {k: v for k, v in task.stats.items() if k != "groups"}}
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--stones", type=int, nargs="*", default=[1, 2, 4])
+    ap.add_argument("--time-limit", type=float, default=60)
+    ap.add_argument("--reference", nargs="*", default=REFERENCE)
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("-o", "--output", default=str(HERE / "heuristics.json"))
+    args = ap.parse_args()
+    if args.quick:
+        args.stones, args.time_limit, args.reference = [1, 2], 20, ["grid", "bridge"]
+    from bcc.atomic import write_text
+    from bcc.generate_rooms import generate_manipulation
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        dungeons = []
+        for n in args.stones:
+            path = Path(tmp) / f"manipulation_{n}.yaml"
+            path.write_text(generate_manipulation(n))
+            dungeons.append((f"manipulation_{n}", str(path)))
+        dungeons += [(name, name) for name in args.reference]
+        print(f"{'dungeon':<16} {'solver':<7} {'heuristic':<9} {'solved':<6} {'cost':>5} {'expanded':>9} {'seconds':>8}")
+        for label, ref in dungeons:
+            info = build_seconds(ref)
+            for solver, heuristic in CONFIGS:
+                r = run(ref, solver, heuristic, args.time_limit)
+                r.update({"dungeon": label, "solver": solver, "heuristic": heuristic, **info})
+                rows.append(r)
+                print(f"{label:<16} {solver:<7} {heuristic:<9} {str(r['solved']):<6} {str(r['cost']):>5} "
+                      f"{str(r['expanded']):>9} {str(r['seconds']):>8}", flush=True)
+    write_text(args.output, json.dumps({"time_limit": args.time_limit, "rows": rows}, indent=1) + "\n")
+    print(f"wrote {args.output}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

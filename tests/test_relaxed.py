@@ -1,0 +1,158 @@
+"""The relaxed view and its heuristics (compiler/relaxed.py, solvers/relaxed_heuristics.py).
+
+Every optimal cost-to-go here comes from an independent exhaustive search: all states
+reachable from the start, then a backward Dijkstra from the goal states over the
+reversed transitions. hmax and LM-cut must never exceed it (admissible), hmax must be
+consistent on every transition, and LM-cut dominates hmax (a theorem of Helmert and
+Domshlak 2009, so a violation is a bug). A* with LM-cut must find BFS's cost.
+"""
+from __future__ import annotations
+
+import heapq
+
+import pytest
+
+from bcc.compiler import compile_dungeon
+from bcc.generate import generate_maze
+from bcc.generate_rooms import generate_manipulation
+from bcc.simulate import replay
+from bcc.solvers import Budget, get_solver
+from bcc.solvers.relaxed_heuristics import relaxed_of
+
+BUDGET = Budget(time_limit=300, max_memory_mb=6000)
+
+# Two rooms; one stone in the red room to carry into the blue one through the door (4, 2).
+TINY_ROOMS = """dungeon: tiny_rooms
+domain: minecraft
+height: 3
+legend:
+  "r": [red_wool, red_wool, red_wool]
+  "b": [blue_wool, blue_wool, blue_wool]
+  ".": [bedrock]
+  "S": [bedrock]
+  "M": [bedrock, burlap_stone]
+map: |
+  rrrrbbbb
+  r.M.b..b
+  rS.....b
+  rrrrbbbb
+agent: {start: S, facing: north, looking: ahead, selected: 0}
+inventory:
+  - {item: diamond_pickaxe, count: 1}
+rooms:
+  - {name: red, color: red, x: [0, 4], z: [0, 3]}
+  - {name: blue, color: blue, x: [4, 7], z: [0, 3]}
+goal: not agentHasBlock(agent, burlap_stone) and forall b in block . (b.blockType != burlap_stone or blockInRoom(b, blue))
+"""
+
+
+def _write(tmp_path, name, text):
+    path = tmp_path / f"{name}.yaml"
+    path.write_text(text)
+    return str(path)
+
+
+def exact_distances(model, limit=200_000):
+    """State -> optimal cost to the goal, for every reachable state that can reach it."""
+    preds = {model.initial: []}
+    order = [model.initial]
+    i = 0
+    while i < len(order):
+        s = order[i]
+        i += 1
+        if model.is_goal(s) or model.is_failure(s):
+            continue
+        for a, n in model.successors(s):
+            if n not in preds:
+                preds[n] = []
+                order.append(n)
+                assert len(order) <= limit, "the model is too big for an exhaustive check"
+            preds[n].append((s, a))
+    dist = {s: 0 for s in order if model.is_goal(s)}
+    heap = [(0, s) for s in dist]
+    while heap:
+        d, s = heapq.heappop(heap)
+        if d > dist[s]:
+            continue
+        for p, a in preds[s]:
+            nd = d + model.action_costs[a]
+            if nd < dist.get(p, nd + 1):
+                dist[p] = nd
+                heapq.heappush(heap, (nd, p))
+    return order, dist
+
+
+def check_admissible(model, sample=None):
+    r = relaxed_of(model)
+    assert r is not None
+    order, dist = exact_distances(model)
+    states = order if sample is None else order[::max(1, len(order) // sample)]
+    checked = 0
+    for s in states:
+        if model.is_failure(s):
+            continue
+        hmax, lmcut = r.hmax(s), r.lmcut(s)
+        assert hmax <= lmcut, (model.name, hmax, lmcut)
+        if s in dist:
+            assert lmcut <= dist[s], (model.name, r.task.state_facts(s), lmcut, dist[s])
+            checked += 1
+        # hmax is consistent: h(s) <= c(a) + h(s') on every transition.
+        if not model.is_goal(s):
+            for a, n in model.successors(s):
+                if not model.is_failure(n):
+                    assert hmax <= model.action_costs[a] + r.hmax(n)
+    assert checked > 0
+    return dist[model.initial]
+
+
+def test_grid_exhaustive():
+    model = compile_dungeon("grid")
+    assert check_admissible(model) == 7   # hand-derived in tests/test_solvers.py
+
+
+@pytest.mark.slow
+def test_tiny_rooms_exhaustive(tmp_path):
+    model = compile_dungeon(_write(tmp_path, "tiny_rooms", TINY_ROOMS))
+    cost = check_admissible(model)
+    result = get_solver("astar")(model, BUDGET, heuristic="lmcut")
+    assert result.solved and result.cost == cost
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_generated_mazes_admissible_and_optimal(tmp_path, seed):
+    text = generate_maze(7, 7, stones=1 + seed % 2, lava=seed % 2, seed=seed)
+    model = compile_dungeon(_write(tmp_path, f"maze{seed}", text))
+    cost = check_admissible(model, sample=300)
+    bfs = get_solver("bfs")(model, BUDGET)
+    assert bfs.cost == cost
+    for heuristic in ("lmcut", "hmax"):
+        result = get_solver("astar")(model, BUDGET, heuristic=heuristic)
+        assert result.solved and result.cost == cost, heuristic
+        assert replay(model, [(p, 1, 1) for p in result.plan]).valid
+
+
+@pytest.mark.parametrize("heuristic", ["hff", "hadd"])
+def test_greedy_plans_replay(tmp_path, heuristic):
+    model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
+    result = get_solver("gbfs")(model, BUDGET, heuristic=heuristic)
+    assert result.solved
+    check = replay(model, [(p, 1, 1) for p in result.plan])
+    assert check.valid and check.cost == result.cost
+
+
+def test_relaxed_view_facts_and_goal():
+    """The grid's goal is the agent on the gold at (1, 1): one fact of the merged (x, z) group."""
+    model = compile_dungeon("grid")
+    task = model.data("relaxed_task")
+    assert [task.labels[g] for g in task.goal] == ["agent.x=1, agent.z=1"]
+    assert ["agent.x", "agent.z"] in task.stats["groups"]
+    facts = task.state_facts(model.initial)
+    assert any(task.labels[f] == "agent.x=1, agent.z=3" for f in facts)
+
+
+def test_goal_that_cannot_hold_is_infinite(tmp_path):
+    model = compile_dungeon("four_rooms", goal="agentHasBlock(agent, gold)")
+    r = relaxed_of(model)
+    assert r.hmax(model.initial) == r.lmcut(model.initial) == float("inf")
+    result = get_solver("astar")(model, BUDGET, heuristic="lmcut")
+    assert not result.solved and result.status == "no_solution"
