@@ -52,9 +52,11 @@ def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
     old_cap = None
     vm = _vm_bytes()
     if budget.max_memory_mb is not None and vm is not None:
-        # What the budget still allows this process to grow by, plus 5 % for the gap
-        # between address space and resident memory.
-        room = max(budget.max_memory_mb - current_rss_mb(), 0) * 1.05 + 16
+        # What the budget still allows this process to grow by. New memory is new address
+        # space (a dict doubling its table, a numpy array), so capping the growth of the
+        # address space caps the growth of resident memory, give or take pages already
+        # mapped but not yet touched.
+        room = max(budget.max_memory_mb - current_rss_mb(), 1)
         cap = vm + int(room * 2**20)
         try:
             old_cap = resource.getrlimit(resource.RLIMIT_AS)

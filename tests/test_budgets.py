@@ -83,9 +83,9 @@ def test_memory_budget_caps_what_the_process_allocates(tmp_path):
     process never holds much more than the budget (an allocation past it fails at once)."""
     path = tmp_path / "big.yaml"
     path.write_text(generate_maze(65, 65, stones=10, seed=1))
-    code, data, wall, peak = run("solve", str(path), "--solver", "bfs", "--max-memory", "120", "--json")
+    code, data, wall, peak = run("solve", str(path), "--solver", "bfs", "--max-memory", "250", "--json")
     assert code == 1 and data["status"] == "budget" and data["budget"] == "max_memory"
-    assert data["peak_mb"] <= 120 * 1.1 + 5 and peak <= 120 * 1.1 + 5
+    assert data["peak_mb"] <= 250 * 1.1 and peak <= 250 * 1.1
 
 
 def test_peak_mb_is_the_process_peak():
