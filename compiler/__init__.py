@@ -62,8 +62,9 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         search = sorted(relevant_actions(actions, sorted(reach.applicable), goal_ir, failure_ir, an))
     else:
         search = list(range(len(actions)))
-    ns, source = Emitter(layout, {n: len(e.values) for n, e in dom.enums.items()}).build(
-        actions, goal_ir, failure_ir, search)
+    emitter = Emitter(layout, {n: len(e.values) for n, e in dom.enums.items()})
+    ns, source = emitter.build(actions, goal_ir, failure_ir, search)
+    _check_start(g, emitter, ns, dungeon, initial)
 
     grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
                 layout.static_grid, tuple(venum.values), layout.grid_default)
@@ -123,6 +124,25 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         report=report, source=source, display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"pattern_database": pattern_database,
                                                     "relaxed_task": relaxed_task})
+
+
+def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:
+    """The domain's `dungeon.start` condition (e.g. "the agent's cells are free") must hold
+    in the dungeon's start, or the agent would begin stuck inside a wall with no hint why."""
+    from .domain import _expr
+    from .source import error_at
+    binding = dungeon.domain.binding
+    if "start" not in binding:
+        return
+    src = _expr(binding, "start")
+    space = dict(ns)
+    exec(compile(emitter.predicate_source("start_ok", g.bool_expr(src.node, Ctx(src))), "<bcc start>", "exec"), space)
+    if space["start_ok"](initial):
+        return
+    text = " ".join(src.text.split())
+    message = f"the dungeon's start breaks its domain's start condition `{text}`"
+    where = dungeon.where.get((dungeon.agent_name, "x"))
+    raise error_at(*where, message + " (is the agent inside a block?)") if where else BccError(message, dungeon.path)
 
 
 def _goal(dungeon: Dungeon, goal: str | None) -> Expr:

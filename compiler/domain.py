@@ -234,7 +234,10 @@ def _check_binding(data, b, classes) -> None:
     """The `dungeon:` section names classes and attributes; check them all here, with positions."""
     if not isinstance(b, YMap):
         raise error_at(data, "dungeon", "`dungeon` maps parts of a dungeon file (grid, agent, ...) to classes")
-    check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms", "lists"}, set(), "the `dungeon` section")
+    check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms", "lists", "start"}, set(),
+               "the `dungeon` section")
+    if "start" in b:  # a condition every dungeon's start must meet, e.g. the agent's cell is free
+        _expr(b, "start")
 
     def cls(container, key):
         name = container[key]

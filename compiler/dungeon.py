@@ -248,12 +248,7 @@ class _Builder:
                 raise error_at(agent, "start", f"the start {list(pos)} is outside the dungeon ({dungeon.width}x{dungeon.height}x{dungeon.depth})")
             values[axis] = value
             dungeon.where[(dungeon.agent_name, axis)] = (agent, "start")
-        x, y, z = pos
-        inside = int(dungeon.grid[y, z, x])
-        if inside != self.default_index:  # the agent's own cell must be empty (it would start stuck)
-            raise error_at(agent, "start", f"the agent would start inside a block ({self.venum.values[inside]}) "
-                                           f"at {list(pos)}; start it on top of a column (a map character) or "
-                                           f"in an empty cell")
+
         fields = self.binding.get("agent_fields") or {}
         for key in FACINGS_KEYS:
             if key not in agent:

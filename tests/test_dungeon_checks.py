@@ -40,8 +40,9 @@ def test_an_agent_started_inside_a_wall_is_refused_at_its_start(tmp_path):
     path = write(tmp_path, start="[0, 1, 0]")
     result = CliRunner().invoke(main, ["solve", path])
     assert result.exit_code == 2
-    assert re.fullmatch(rf"{re.escape(path)}:13:10: the agent would start inside a block \(bedrock\) at "
-                        r"\[0, 1, 0\].*\n", result.stderr)
+    assert re.fullmatch(rf"{re.escape(path)}:13:10: the dungeon's start breaks its domain's start condition "
+                        r"`passable\(agent.x, agent.y, agent.z\) and .*` \(is the agent inside a block\?\)\n",
+                        result.stderr)
 
 
 def test_a_legend_character_the_map_never_uses_is_a_warning_with_its_position(tmp_path):
