@@ -13,6 +13,7 @@ holds only indices and numbers: no text from the PDDL files reaches it.
 """
 from __future__ import annotations
 
+import functools
 from collections import Counter
 
 from ..compiler import ir
@@ -187,4 +188,13 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
         variables=tuple(Variable(v.owner, i, 0, 1, "bool") for i, v in enumerate(var_of)),
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),
         goal_positions=None, report=report, source=source, search_actions=tuple(range(len(actions))),
-        lazy={"ground_task": lambda: task, "ir": lambda: (actions, goal), "pddl_files": lambda: files})
+        lazy={"ground_task": lambda: task, "ir": lambda: (actions, goal), "pddl_files": lambda: files,
+              "relaxed_task": functools.partial(_relaxed_once, task, {})})
+
+
+def _relaxed_once(task, cache: dict, time_limit: float | None = None):
+    """The delete-relaxed view (relaxed.py), built on first use."""
+    if "view" not in cache:
+        from .relaxed import relaxed_task
+        cache["view"] = relaxed_task(task)
+    return cache["view"]

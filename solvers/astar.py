@@ -30,7 +30,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     switching = heuristic == "auto"
     used = "manhattan" if switching else heuristic
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
-        switching, used = False, "blind"   # no agent position (e.g. imported PDDL): say what runs
+        # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if there is one.
+        switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
     h = HEURISTICS[used](model)
     start = model.initial
     h0 = h(start)

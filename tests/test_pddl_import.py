@@ -118,7 +118,7 @@ def test_cli_import_solves_and_prints_pddl_actions():
                                   "--json"])
     assert r.exit_code == 0, r.output
     out = json.loads(r.output)
-    assert out["cost"] == 9 and out["plan"][0].startswith("(pick ") and out["heuristic"] == "blind"
+    assert out["cost"] == 9 and out["plan"][0].startswith("(pick ") and out["heuristic"] == "lmcut"
 
 
 def test_the_plan_file_holds_one_action_a_line(tmp_path):
