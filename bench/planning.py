@@ -19,9 +19,10 @@ checked by an independent validator (pddl-pyvalidator, when installed) and their
 against Fast Downward's optimal configurations. Prints coverage and ratio tables, writes
 bench/planning.json and, with matplotlib, bench/planning.png.
 
-The manipulation dungeons (bench/dungeons/stones_N.yaml: three rooms, N stones to carry
-into the blue room) run through `bcc solve` and through `--solver fd` (Fast Downward on
-bcc's own PDDL export), beside each other.
+The manipulation dungeons (bcc.generate_rooms: three rooms, N = 2, 4, 6, 8 stones to
+carry into the blue room) run through `bcc solve` (A* with its default heuristic, GBFS
+with hff) and through `--solver fd` (Fast Downward on bcc's own PDDL export of the
+dungeon: astar(blind()), lazy_greedy([ff()])), beside each other.
 """
 from __future__ import annotations
 
@@ -40,7 +41,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 MANIFEST = HERE / "planning_manifest.txt"
 FD_CONFIGS = {"fd-blind": "astar(blind())", "fd-lmcut": "astar(lmcut())", "fd-ff": "lazy_greedy([ff()])"}
-BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"]}
+BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-gbfs": ["--solver", "gbfs", "--heuristic", "hff"]}
 OPTIMAL = {"bcc-astar", "fd-blind", "fd-lmcut"}
 DUNGEON_GOAL = "every stone in the blue room"
 
@@ -131,7 +132,7 @@ def run_dungeon(path: Path, solver: list, limit: float, label: str) -> dict:
             "expanded": data.get("expanded"), "search_seconds": data.get("seconds"), "heuristic": data.get("heuristic")}
 
 
-DUNGEON_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-gbfs": ["--solver", "gbfs"],
+DUNGEON_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-gbfs": ["--solver", "gbfs", "--heuristic", "hff"],
                    "fd-blind": ["--solver", "fd", "--fd-search", "astar(blind())"],
                    "fd-ff": ["--solver", "fd", "--fd-search", "lazy_greedy([ff()])"]}
 
@@ -208,12 +209,21 @@ def main(argv=None):
     ap.add_argument("--no-validate", action="store_true")
     ap.add_argument("--dungeons-only", action="store_true")
     ap.add_argument("--no-dungeons", action="store_true")
+    ap.add_argument("--stones", type=int, nargs="+", default=[2, 4, 6, 8], help="manipulation dungeons to run")
+    ap.add_argument("--combine", type=Path, nargs="+", metavar="JSON",
+                    help="only merge the JSON of earlier runs (e.g. halves run side by side) and report")
     ap.add_argument("--out", type=Path, default=HERE / "planning.json")
     ap.add_argument("--plot", type=Path, default=HERE / "planning.png")
     args = ap.parse_args(argv)
     configs = args.configs.split(",")
     problems, dungeons = [], []
-    if not args.dungeons_only:
+    if args.combine:
+        parts = [json.loads(p.read_text()) for p in args.combine]
+        configs = parts[0]["configs"]
+        problems = [p for part in parts for p in part.get("ipc", {}).get("problems", [])]
+        dungeons = [d for part in parts for d in part.get("dungeons", [])]
+        args.time_limit = parts[0]["time_limit"]
+    elif not args.dungeons_only:
         if args.ipc is None:
             ap.error("--ipc DIR is needed (or --dungeons-only)")
         for entry in read_manifest(args.manifest):
@@ -245,12 +255,16 @@ def main(argv=None):
                   f"{r.get('seconds')}s | " + " ".join(f"{c} {runs[c].get('cost')}/{runs[c]['seconds']}s"
                                                       for c in configs if c.startswith("fd-")) +
                   f" {entry.get('cost_check', '')} {entry.get('validation', '')}", file=sys.stderr, flush=True)
-    if not args.no_dungeons:
-        for path in sorted((HERE / "dungeons").glob("stones_*.yaml"), key=lambda p: int(p.stem.split("_")[1])):
-            runs = {c: run_dungeon(path, s, args.time_limit, c) for c, s in DUNGEON_CONFIGS.items()}
-            dungeons.append({"name": path.stem, "runs": runs})
-            print(f"{path.stem}: " + " ".join(f"{c} {r.get('cost')}/{r.get('expanded')}/{r['seconds']}s"
-                                            for c, r in runs.items()), file=sys.stderr, flush=True)
+    if not args.no_dungeons and not args.combine:
+        from bcc.generate_rooms import generate_manipulation
+        with tempfile.TemporaryDirectory(prefix="bcc-bench-rooms-") as tmp:
+            for n in args.stones:
+                path = Path(tmp) / f"stones_{n}.yaml"
+                path.write_text(generate_manipulation(n, name=f"stones_{n}"))
+                runs = {c: run_dungeon(path, s, args.time_limit, c) for c, s in DUNGEON_CONFIGS.items()}
+                dungeons.append({"name": path.stem, "runs": runs})
+                print(f"{path.stem}: " + " ".join(f"{c} {r.get('cost')}/{r.get('expanded')}/{r['seconds']}s"
+                                                for c, r in runs.items()), file=sys.stderr, flush=True)
     report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
               "time_limit": args.time_limit, "configs": configs}
     if problems:
