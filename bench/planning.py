@@ -41,8 +41,9 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 MANIFEST = HERE / "planning_manifest.txt"
 FD_CONFIGS = {"fd-blind": "astar(blind())", "fd-lmcut": "astar(lmcut())", "fd-ff": "lazy_greedy([ff()])"}
-BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-gbfs": ["--solver", "gbfs", "--heuristic", "hff"]}
-OPTIMAL = {"bcc-astar", "fd-blind", "fd-lmcut"}
+BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-blind": ["--solver", "astar", "--heuristic", "blind"],
+               "bcc-gbfs": ["--solver", "gbfs", "--heuristic", "hff"]}
+OPTIMAL = {"bcc-astar", "bcc-blind", "fd-blind", "fd-lmcut"}
 DUNGEON_GOAL = "every stone in the blue room"
 
 
@@ -137,6 +138,14 @@ DUNGEON_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-gbfs": ["--solver", 
                    "fd-ff": ["--solver", "fd", "--fd-search", "lazy_greedy([ff()])"]}
 
 
+def check_costs(entry: dict) -> None:
+    """Every optimal configuration that solved the problem must report the same cost."""
+    runs = entry["runs"]
+    costs = {c: r["cost"] for c, r in runs.items() if c in OPTIMAL and r.get("solved")}
+    if any(c.startswith("bcc") for c in costs) and any(c.startswith("fd") for c in costs):
+        entry["cost_check"] = "ok" if len(set(costs.values())) == 1 else f"WRONG: {costs}"
+
+
 # ---- reports ------------------------------------------------------------------------
 def summarize(problems: list, configs: list) -> dict:
     cov = {c: sum(1 for p in problems if p["runs"].get(c, {}).get("solved")) for c in configs}
@@ -154,7 +163,9 @@ def summarize(problems: list, configs: list) -> dict:
         ratios[c] = {"median_vs_best_fd": round(statistics.median(rs), 2) if rs else None,
                      "worst_vs_best_fd": round(max(rs), 2) if rs else None, "problems": len(rs)}
     wrong = [p["name"] for p in problems if p.get("cost_check", "").startswith("WRONG")]
-    invalid = [p["name"] for p in problems if p.get("validation", "").startswith("INVALID")]
+    invalid = [f"{p['name']} ({c})" for p in problems for c, r in p["runs"].items()
+               if r.get("validation", "").startswith("INVALID")]
+    invalid += [p["name"] for p in problems if p.get("validation", "").startswith("INVALID")]  # older runs
     return {"coverage": cov, "time_ratios": ratios, "wrong_costs": wrong, "invalid_plans": invalid,
             "problems": len(problems)}
 
@@ -199,11 +210,27 @@ def plot(problems: list, configs: list, path: Path):
     print(f"wrote {path}")
 
 
+def save(args, configs, problems, dungeons) -> dict:
+    for entry in problems:
+        check_costs(entry)
+    report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
+              "time_limit": args.time_limit, "configs": configs}
+    if problems:
+        report["ipc"] = {"summary": summarize(problems, configs), "problems": problems}
+    if dungeons:
+        report["dungeons"] = dungeons
+    from bcc.atomic import write_text
+    write_text(str(args.out), json.dumps(report, indent=1) + "\n")
+    return report
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--ipc", type=Path, help="folder with copies of the repositories the manifest names")
     ap.add_argument("--manifest", type=Path, default=MANIFEST)
     ap.add_argument("--only", help="regular expression: only problems whose name matches")
+    ap.add_argument("--per-domain", type=int, default=None, metavar="N",
+                    help="only the first N problems of each domain of the manifest")
     ap.add_argument("--time-limit", type=float, default=120.0)
     ap.add_argument("--configs", default=",".join([*BCC_CONFIGS, *FD_CONFIGS]))
     ap.add_argument("--no-validate", action="store_true")
@@ -219,15 +246,24 @@ def main(argv=None):
     problems, dungeons = [], []
     if args.combine:
         parts = [json.loads(p.read_text()) for p in args.combine]
-        configs = parts[0]["configs"]
-        problems = [p for part in parts for p in part.get("ipc", {}).get("problems", [])]
+        configs = list(dict.fromkeys(c for part in parts for c in part["configs"]))
+        by_name: dict = {}
+        for part in parts:     # runs of the same problem (other configurations) are merged
+            for p in part.get("ipc", {}).get("problems", []):
+                by_name.setdefault(p["name"], {**p, "runs": {}})["runs"].update(p["runs"])
+        problems = list(by_name.values())
         dungeons = [d for part in parts for d in part.get("dungeons", [])]
         args.time_limit = parts[0]["time_limit"]
     elif not args.dungeons_only:
         if args.ipc is None:
             ap.error("--ipc DIR is needed (or --dungeons-only)")
+        seen: dict = {}
         for entry in read_manifest(args.manifest):
             if args.only and not re.search(args.only, entry["name"]):
+                continue
+            domain_dir = entry["name"].split("/")[0]
+            seen[domain_dir] = seen.get(domain_dir, 0) + 1
+            if args.per_domain is not None and seen[domain_dir] > args.per_domain:
                 continue
             base = args.ipc / entry["repo"].split("/")[-1]
             dom, prob = base / entry["domain_path"], base / entry["problem_path"]
@@ -241,20 +277,15 @@ def main(argv=None):
                     if c in BCC_CONFIGS:
                         runs[c] = run_bcc(c, str(dom), str(prob), args.time_limit, plan_file)
                         if runs[c].get("solved") and not args.no_validate:
-                            entry["validation"] = validate_plan(str(dom), str(prob), plan_file)
+                            runs[c]["validation"] = validate_plan(str(dom), str(prob), plan_file)
                     else:
                         runs[c] = run_fd(c, str(dom), str(prob), args.time_limit)
             entry["runs"] = runs
-            opt = {r["cost"] for c, r in runs.items() if c in OPTIMAL and c.startswith("fd-") and r.get("solved")}
-            mine = runs.get("bcc-astar", {})
-            if mine.get("solved") and opt:
-                entry["cost_check"] = "ok" if {mine["cost"]} == opt else f"WRONG: bcc {mine['cost']}, FD {sorted(opt)}"
             problems.append(entry)
-            r = runs.get("bcc-astar", {})
-            print(f"{entry['name']:<44} bcc {r.get('status')} cost {r.get('cost')} exp {r.get('expanded')} "
-                  f"{r.get('seconds')}s | " + " ".join(f"{c} {runs[c].get('cost')}/{runs[c]['seconds']}s"
-                                                      for c in configs if c.startswith("fd-")) +
-                  f" {entry.get('cost_check', '')} {entry.get('validation', '')}", file=sys.stderr, flush=True)
+            save(args, configs, problems, [])   # after each problem: a stopped run keeps what it measured
+            print(f"{entry['name']:<44} " + " ".join(f"{c} {runs[c].get('cost')}/{runs[c].get('expanded')}/"
+                                                     f"{runs[c]['seconds']}s {runs[c].get('validation', '')}"
+                                                     for c in configs), file=sys.stderr, flush=True)
     if not args.no_dungeons and not args.combine:
         from bcc.generate_rooms import generate_manipulation
         with tempfile.TemporaryDirectory(prefix="bcc-bench-rooms-") as tmp:
@@ -263,15 +294,14 @@ def main(argv=None):
                 path.write_text(generate_manipulation(n, name=f"stones_{n}"))
                 runs = {c: run_dungeon(path, s, args.time_limit, c) for c, s in DUNGEON_CONFIGS.items()}
                 dungeons.append({"name": path.stem, "runs": runs})
+                save(args, configs, problems, dungeons)
                 print(f"{path.stem}: " + " ".join(f"{c} {r.get('cost')}/{r.get('expanded')}/{r['seconds']}s"
                                                 for c, r in runs.items()), file=sys.stderr, flush=True)
-    report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
-              "time_limit": args.time_limit, "configs": configs}
+    report = save(args, configs, problems, dungeons)
     if problems:
         print_table(problems, configs, "IPC problems")
-        report["ipc"] = {"summary": summarize(problems, configs), "problems": problems}
         s = report["ipc"]["summary"]
-        print(f"\ncoverage: " + ", ".join(f"{c} {n}/{len(problems)}" for c, n in s["coverage"].items()))
+        print("\ncoverage: " + ", ".join(f"{c} {n}/{len(problems)}" for c, n in s["coverage"].items()))
         for c, r in s["time_ratios"].items():
             print(f"{c}: whole-process time / best Fast Downward configuration: median {r['median_vs_best_fd']}x, "
                   f"worst {r['worst_vs_best_fd']}x over {r['problems']} problems both solved")
@@ -279,9 +309,6 @@ def main(argv=None):
         plot(problems, configs, args.plot)
     if dungeons:
         print_table(dungeons, list(DUNGEON_CONFIGS), f"Manipulation dungeons ({DUNGEON_GOAL})")
-        report["dungeons"] = dungeons
-    from bcc.atomic import write_text
-    write_text(str(args.out), json.dumps(report, indent=1) + "\n")
     print(f"wrote {args.out}")
 
 
