@@ -156,3 +156,31 @@ def test_generated_code_holds_no_name_from_the_files(tmp_path):
     model = load("gripper-3")
     for word in ("ball1", "rooma", "pick", "carry", "left"):
         assert word not in model.source
+
+
+def _fast_downward():
+    fd = pytest.importorskip("bcc.pddl_io.fast_downward")
+    if not fd.available():
+        pytest.skip('Fast Downward is not installed: pip install "bcc[pddl]"')
+    return fd
+
+
+@pytest.mark.parametrize("problem", sorted(HAND_COSTS))
+def test_costs_equal_fast_downwards_optimum(problem):
+    fd = _fast_downward()
+    domain = str(HERE / f"{HAND_COSTS[problem][0]}.pddl")
+    theirs = fd.run(domain, str(HERE / f"{problem}.pddl"), "astar(blind())", 60)
+    assert theirs.solved, theirs.message
+    assert get_solver("astar")(load(problem), Budget(time_limit=60)).cost == theirs.cost
+
+
+def test_the_fd_solver_runs_on_an_imported_model():
+    _fast_downward()
+    # It crashed with "TypeError: 'NoneType' object is not callable" (it exported the
+    # model as if it were a compiled dungeon).
+    r = subprocess.run([sys.executable, "-m", "bcc", "import", "pddl", str(HERE / "road-domain.pddl"),
+                        str(HERE / "road-1.pddl"), "--solver", "fd", "--fd-search", "astar(blind())", "--json"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    out = json.loads(r.stdout)
+    assert out["solver"] == "fd" and out["plan"] == ["(drive a b)", "(drive b c)"] and out["cost"] == 2
