@@ -138,7 +138,7 @@ def _reads_vars(node, lets, acc=None) -> set:
 
 
 def _context_vars(action) -> set:
-    """State variables read where they choose a cell or a keyed object (through lets)."""
+    """State variables read where they choose a cell, or a keyed object written (through lets)."""
     lets = {loc.name: value for loc, value in action.lets}
     out: set = set()
 
@@ -157,8 +157,8 @@ def _context_vars(action) -> set:
         if isinstance(node, ir.Cell):
             for c in (node.x, node.y, node.z):
                 reads(c, out)
-        elif isinstance(node, ir.VarAt):
-            reads(node.key, out)
+        # A keyed object only read (inventoryBlock[selected]) needs no context: its key
+        # becomes one more atom of the condition, shared by every context.
         for c in ir.children(node):
             walk(c)
 
@@ -224,6 +224,7 @@ class Builder:
         self.ops: dict = {}          # (pre, add, cost, action) -> None (ordered set)
         self.or_facts: dict = {}     # frozenset of minterms -> aux fact
         self.fired: dict = {}        # (action, residual effects) -> aux fact
+        self.cond_cache: dict = {}   # residual condition -> its decision-tree leaves
 
     # ---- facts -------------------------------------------------------------------------
     def _group_domain(self, members) -> list:
@@ -285,9 +286,15 @@ class Builder:
         None if the conjunction is false; conjuncts too big to enumerate are dropped."""
         parts = []
         for c in conds:
-            try:
-                leaves = self.ev.branch(lambda e, c=c: self.ev.truth(c, e), env, limit)
-            except (TooBig, Drop):
+            leaves = self.cond_cache.get(c) if not env else None
+            if leaves is None:
+                try:
+                    leaves = self.ev.branch(lambda e, c=c: self.ev.truth(c, e), env, limit)
+                except (TooBig, Drop):
+                    leaves = ()
+                if not env:
+                    self.cond_cache[c] = leaves
+            if leaves == ():
                 continue
             true = [m for m, r in leaves if r]
             if not true:
