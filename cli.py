@@ -129,7 +129,7 @@ def progress_enabled():
 @main.command("solve")
 @click.argument("dungeon")
 @click.option("--solver", default="astar", show_default=True, help="Solver name (see `bcc solvers`).")
-@click.option("--heuristic", default=None, help="For informed solvers: auto (default for astar), pdb, manhattan or blind.")
+@click.option("--heuristic", default=None, help="For informed solvers: auto (default for astar), pdb, manhattan, blind, or on the relaxed view hmax, lmcut (admissible), hadd, hff (greedy; hff gives gbfs preferred actions).")
 @click.option("--weight", type=click.FloatRange(min=1), default=None, help="f = g + W h for astar/wastar (W > 1: faster, cost <= W x optimal).")
 @json_option
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
@@ -338,6 +338,23 @@ def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_
     if as_json:
         emit_json({"output": output, "width": width, "depth": depth, "stones": stones, "lava": lava,
                     "loops": loops, "seed": seed, "yaml": None if output else text})
+    elif not output:
+        click.echo(text, nl=False)
+
+
+@generate_group.command("rooms")
+@click.option("--stones", type=int, default=4, show_default=True, help="Stones to carry into the blue room (1..8).")
+@click.option("--name", default=None, help="Dungeon name [default: manipulation_STONES].")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write to FILE (atomically) instead of stdout.")
+@json_option
+def generate_rooms_cmd(stones, name, output, as_json):
+    """Three rooms in a row; carry every stone into the blue room (a manipulation task)."""
+    from .generate_rooms import generate_manipulation
+    text = generate_manipulation(stones, name=name)
+    if output:
+        write_output(output, text)
+    if as_json:
+        emit_json({"output": output, "stones": stones, "yaml": None if output else text})
     elif not output:
         click.echo(text, nl=False)
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 
+from .compiler.names import name_problem
 from .errors import BccError
 
 MAX_STONES = 8
@@ -71,6 +72,8 @@ def generate_manipulation(stones: int = 4, name: str | None = None) -> str:
     """The YAML text of a three-room dungeon with `stones` stones (1..8) to carry."""
     if not isinstance(stones, int) or isinstance(stones, bool) or not 1 <= stones <= MAX_STONES:
         raise BccError(f"stones must be a whole number from 1 to {MAX_STONES}, got {stones!r}")
+    if name is not None and name_problem(name) is not None:
+        raise BccError(f"the name {name_problem(name)}")
     name = name or f"manipulation_{stones}"
     body = "\n".join("  " + row for row in room_map(stones))
     return (f"dungeon: {json.dumps(name)}\n"

@@ -156,3 +156,27 @@ def test_goal_that_cannot_hold_is_infinite(tmp_path):
     assert r.hmax(model.initial) == r.lmcut(model.initial) == float("inf")
     result = get_solver("astar")(model, BUDGET, heuristic="lmcut")
     assert not result.solved and result.status == "no_solution"
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_pruning_keeps_bfs_optimal(tmp_path, seed):
+    """Backward relevance (compiler/relevance.py) and the static folding of unchanged
+    attributes and layers: BFS on the pruned model finds the unpruned model's cost."""
+    text = generate_maze(7, 7, stones=1 + seed, seed=10 + seed)
+    path = _write(tmp_path, f"prune{seed}", text)
+    pruned, full = compile_dungeon(path), compile_dungeon(path, prune=False)
+    assert len(pruned.search_actions) <= len(full.search_actions)
+    a, b = get_solver("bfs")(pruned, BUDGET), get_solver("bfs")(full, BUDGET)
+    assert a.solved and b.solved and a.cost == b.cost
+    assert a.expanded <= b.expanded
+
+
+@pytest.mark.slow
+def test_manipulation_rooms_pruned_and_relaxed_agree_with_bfs(tmp_path):
+    model = compile_dungeon(_write(tmp_path, "rooms1", generate_manipulation(1)))
+    full = compile_dungeon(_write(tmp_path, "rooms1", generate_manipulation(1)), prune=False)
+    bfs = get_solver("bfs")(full, BUDGET)
+    assert get_solver("bfs")(model, BUDGET).cost == bfs.cost
+    result = get_solver("astar")(model, BUDGET, heuristic="lmcut")
+    assert result.solved and result.cost == bfs.cost
+    assert result.expanded < bfs.expanded
