@@ -113,21 +113,35 @@ def _same_dungeon(dungeon: str, demo_path: str) -> None:
 @db_option
 @click.option("--corpus/--no-corpus", "with_corpus", default=False, show_default=True,
               help="Also train on the shipped corpus's training split.")
+@click.option("--pairs", "pairs_paths", multiple=True, type=click.Path(dir_okay=False),
+              help="Also train on command/task pairs without demonstrations (JSON Lines, see `bcc corpus evaluate`); repeatable.")
+@click.option("--dungeon", default=None, help="The dungeon of --pairs lines that name none.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the model to FILE (JSON, atomically).")
 @json_option
-def train_cmd(db, with_corpus, output, as_json):
-    """Retrain the translation model (IBM Model 2, EM) on the dataset; store it there."""
-    from . import corpus
+def train_cmd(db, with_corpus, pairs_paths, dungeon, output, as_json):
+    """Retrain the grounding model on the dataset (and --corpus, --pairs); store it there."""
+    from . import corpus, pairs
     from .dataset import Dataset
     from .learn import train
+    rows = []
+    for path in pairs_paths:
+        given = pairs.load(path, dungeon)
+        pairs.check_tasks(given)
+        rows += [{"command": r["command"], "dungeon": r["dungeon"], "explanations": [{"task": r["task"], "weight": 1.0}]}
+                 for r in given]
+    if output:
+        from ..atomic import check_writable
+        check_writable(output)
     data = Dataset(db)
     try:
-        rows = data.pairs()
+        rows = data.pairs() + rows
         if with_corpus:
-            rows += [r for r in corpus.load() if r["split"] == "train"]
+            rows += [r | {"dungeon": corpus.resolve(r["dungeon"])} for r in corpus.load() if r["split"] == "train"]
         if not rows:
-            raise BccError("the dataset has no pairs: add some with `bcc learn`, or pass --corpus", str(data.path))
-        model, seconds = train(rows)
+            raise BccError("the dataset has no pairs: add some with `bcc learn`, or pass --corpus or --pairs FILE",
+                           str(data.path))
+        model, seconds = train(rows, candidates_of=lambda r: corpus.candidates(r) if "prefix" in r
+                               else pairs.candidates(r["dungeon"]))
         data.add_model(model.to_json(), len(rows), with_corpus, seconds)
     finally:
         data.close()
@@ -137,7 +151,7 @@ def train_cmd(db, with_corpus, output, as_json):
         emit_json({"pairs": len(rows), "vocabulary": len(model.vocabulary), "iterations": model.iterations,
                    "seconds": round(seconds, 3), "with_corpus": with_corpus, "db": str(data.path), "output": output})
         return
-    click.echo(f"trained on {len(rows)} pair(s), {len(model.vocabulary)} words, {model.iterations} EM iterations "
+    click.echo(f"trained on {len(rows)} pair(s), {len(model.vocabulary)} words, {model.iterations} iterations "
                f"in {seconds:.2f} s; stored in {data.path}")
 
 
@@ -146,9 +160,9 @@ def _translation(db, model_path):
     from pathlib import Path
 
     from .dataset import Dataset, default_path
-    from .translation import IBMModel2
+    from .models import from_json, load
     if model_path:
-        return IBMModel2.load(model_path), model_path
+        return load(model_path), model_path
     path = Path(db) if db else default_path()
     if path.is_file():
         data = Dataset(path)
@@ -157,7 +171,7 @@ def _translation(db, model_path):
         finally:
             data.close()
         if latest is not None:
-            return IBMModel2.from_json(latest, str(path)), str(path)
+            return from_json(latest, str(path)), str(path)
     from . import corpus
     return corpus.corpus_model(), "shipped corpus"
 
@@ -240,17 +254,58 @@ def corpus_generate_cmd(pairs, seed, workers, as_json):
 
 
 @corpus_group.command("evaluate")
+@click.option("--train", "train_path", type=click.Path(dir_okay=False), default=None,
+              help="Pairs to train on (JSON Lines with command and task); without it, the shipped corpus's split.")
+@click.option("--test", "test_path", type=click.Path(dir_okay=False), default=None,
+              help="Pairs to test on [default: --folds cross-validation over --train].")
+@click.option("--folds", type=click.IntRange(min=2), default=None, help="K-fold cross-validation over --train [default: 10].")
+@click.option("--dungeon", default=None, help="The dungeon of pairs that name none.")
+@click.option("--level", "levels", multiple=True, help="Only pairs of this level (repeatable).")
+@click.option("--from", "mode", type=click.Choice(["tasks", "demonstrations", "both"]), default="both", show_default=True,
+              help="Train on the given tasks, on tasks inferred from planned demonstrations, or report both.")
+@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the fold shuffle.")
 @json_option
-def corpus_evaluate_cmd(as_json):
-    """Train on the corpus's training split; report accuracy on its held-out split."""
+def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, as_json):
+    """Train a fresh model on training pairs only; report held-out accuracy overall, per level,
+    and a confusion table of tasks.
+
+    Without --train: the shipped corpus's training split and held-out split."""
+    if train_path is None:
+        if test_path or folds or dungeon or levels:
+            raise BccError("--test, --folds, --dungeon and --level need --train FILE")
+        return _evaluate_shipped(as_json)
+    from . import pairs
+    if test_path and folds:
+        raise BccError("give --test FILE or --folds K, not both")
+    train_rows = pairs.load(train_path, dungeon, levels)
+    test_rows = pairs.load(test_path, dungeon, levels) if test_path else None
+    pairs.check_tasks(train_rows + (test_rows or []))
+    splits = [(train_rows, test_rows)] if test_rows else pairs.folds(train_rows, folds or 10, seed)
+    modes = list(pairs.MODES) if mode == "both" else [mode]
+    reports = [pairs.evaluate(splits, m) for m in modes]
+    if as_json:
+        emit_json(reports[0] if len(reports) == 1 else {**reports[0], "modes": {r["mode"]: r for r in reports}})
+        return
+    how = f"train on {train_path}, test on {test_path}" if test_rows else f"{len(splits)}-fold cross-validation over {train_path}"
+    click.echo(f"{len(train_rows) + len(test_rows or [])} pairs; {how}")
+    for r in reports:
+        click.echo(f"from {r['mode']}: accuracy {r['accuracy']:.1%} (training {r['train_seconds']:.1f} s a model)")
+        for level, v in r["by_level"].items():
+            click.echo(f"  {level:>6}  {v['correct']:5d}/{v['total']:<5d} {v['accuracy']:.1%}")
+    click.echo(f"confusion (from {reports[0]['mode']}): task -> predicted, count")
+    for c in reports[0]["confusion"]:
+        click.echo(f"  {'ok ' if c['task'] == c['predicted'] else '   '}{c['count']:5d}  {c['task']}  ->  {c['predicted']}")
+
+
+def _evaluate_shipped(as_json):
+    """The shipped corpus: train on its training split, report accuracy on its held-out split."""
     import time
 
     from . import corpus
-    from .learn import train
     rows = corpus.load()
     train_rows = [r for r in rows if r["split"] == "train"]
     test_rows = [r for r in rows if r["split"] == "test"]
-    model, seconds = train(train_rows)
+    model, seconds = corpus.train(train_rows)
     t0 = time.perf_counter()
     result = corpus.evaluate(model, test_rows)
     report = {"pairs": len(rows), "train": len(train_rows), "test": len(test_rows),

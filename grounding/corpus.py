@@ -271,6 +271,18 @@ def start_state(row: dict):
     return space, from_actions(space.model, row["prefix"]).states[-1]
 
 
+def candidates(row: dict) -> list[str]:
+    """The candidate task texts of a corpus row, from its start."""
+    space, start = start_state(row)
+    return [t.text for t in space.tasks(start)]
+
+
+def train(rows: list[dict]):
+    """A grounding model trained on corpus rows (negatives: each row's candidates from its start)."""
+    from .learn import train as train_rows
+    return train_rows([r | {"dungeon": resolve(r["dungeon"])} for r in rows], candidates_of=candidates)
+
+
 def evaluate(model, rows: list[dict]) -> dict:
     """Held-out accuracy: the interpreted task equals the task the pair was generated for."""
     from .interpret import rank
@@ -295,9 +307,8 @@ _cache = _Cache()
 
 
 def corpus_model(split: str | None = "train"):
-    """The translation model trained on the shipped corpus (`split` rows, or all with None),
-    cached in memory; training takes well under a second, so nothing is shipped pre-trained."""
-    from .learn import train
+    """The grounding model trained on the shipped corpus (`split` rows, or all with None),
+    cached in memory; training takes seconds, so nothing is shipped pre-trained."""
     key = f"{digest()}:{split}"
     if _cache.digest != key:
         rows = [r for r in load() if split is None or r["split"] == split]

@@ -37,11 +37,16 @@ def explanations(space: TaskSpace, states: list, optimality: bool = True) -> lis
     """The tasks the trajectory `states` explains, most likely first."""
     start = states[0]
     open_atoms = [a for a in space.atoms if not space.holds(a, start)]
-    truth = {a: [space.holds(a, s) for s in states] for a in open_atoms}
+    truth = {a: [space.holds(a, s) for s in states] for a in space.atoms}
     at_end = [a for a in open_atoms if truth[a][-1]]
+    # where the agent was at the start, left on the way and is again at the end: a conjunct
+    # ("and come back"), as in TaskSpace.tasks
+    back = [a for a in space.changeable if a not in open_atoms and truth[a][-1] and not all(truth[a])]
     found = []
     for k in range(1, MAX_CONJUNCTS + 1):
-        for combo in itertools.combinations(at_end, k):
+        for combo in itertools.combinations(at_end + back, k):
+            if all(a in back for a in combo):
+                continue
             if not any(all(truth[a][step] for a in combo) for step in range(len(states) - 1)):
                 found.append(Task(tuple(sorted(combo, key=lambda a: a.text))))
     steps = len(states) - 1

@@ -1,10 +1,10 @@
 """A command in a dungeon -> the most probable task, and a plan that carries it out.
 
-P(task | words) is proportional to P(task) P(words | task): the prior over lifted tasks
-and the likelihood both come from the translation model (translation.py). A task is
-*plausible* when the translation model explains the command's known words better than
-chance (a task of never-seen tokens); if none is, or if at least half of the words were
-never seen in training, the command is not understood.
+The grounding model gives P(task | command) over the dungeon's candidate tasks from the
+start (loglinear.py; IBM Model 2 for older model files). A task is *plausible* when its
+posterior beats chance (one over the number of candidates); if none does, or if at least
+half of the words (spelling corrected) were never seen in training, the command is not
+understood.
 """
 from __future__ import annotations
 
@@ -14,9 +14,8 @@ import math
 from dataclasses import dataclass, field
 
 from ..model import Model
-from .learn import template
 from .tasks import TaskSpace
-from .translation import IBMModel2, words
+from .text import words
 
 TOP = 5              # candidates reported
 
@@ -40,26 +39,26 @@ class Interpretation:
                 "cost": r.cost if r is not None and r.solved else None, "message": self.message}
 
 
-def rank(translation: IBMModel2, space: TaskSpace, start: bytes, command: str) -> Interpretation:
-    """Score every candidate task of the dungeon from `start` against the command."""
-    e = words(command)
-    unknown = sorted({w for w in e if w not in translation.vocabulary})
-    chance = translation.chance(e)
-    scored = []
-    for task in space.tasks(start):
-        ll = translation.log_likelihood(e, task.tokens)
-        prior = translation.log_prior(template(task.text))
-        scored.append((task.text, ll + prior, ll > chance + 1e-9))
-    if not scored:
+def rank(translation, space: TaskSpace, start: bytes, command: str) -> Interpretation:
+    """Score every candidate task of the dungeon from `start` against the command.
+
+    `translation` is a grounding model: the log-linear model (loglinear.py) or, from an
+    older model file, IBM Model 2 (translation.py)."""
+    e = translation.tokens(command)
+    unknown = sorted({w for w, n in zip(words(command), e) if n not in translation.vocabulary})
+    tasks = [t.text for t in space.tasks(start)]
+    if not tasks:
         return Interpretation(command, None, [], unknown, "the dungeon offers no task from this start")
-    top = max(s for _, s, _ in scored)
-    z = sum(math.exp(s - top) for _, s, _ in scored)
-    posterior = sorted(((t, math.exp(s - top) / z, ok) for t, s, ok in scored), key=lambda x: (-x[1], x[0]))
+    scores = translation.log_posterior(command, tasks)
+    chance = -math.log(len(tasks))
+    posterior = sorted(((t, math.exp(s), s > chance + 1e-9 or len(tasks) == 1) for t, s in zip(tasks, scores)),
+                       key=lambda x: (-x[1], x[0]))
     plausible = [(t, p) for t, p, ok in posterior if ok]
-    if not translation.known(e):
+    known = translation.known(e)
+    if not known:
         return Interpretation(command, None, [], unknown, "no word of the command was seen in training",
                               all_scores=posterior)
-    if len(translation.known(e)) <= len(e) - len(translation.known(e)):
+    if len(known) <= len(e) - len(known):
         return Interpretation(command, None, [], unknown, "most words of the command were never seen in training",
                               all_scores=posterior)
     if not plausible:

@@ -9,8 +9,10 @@ import functools
 import re
 import time
 
+from ..errors import BccError
 from .demonstration import Demonstration
 from .infer import explanations
+from .loglinear import LogLinear
 from .tasks import TaskSpace
 from .translation import IBMModel2, words
 
@@ -45,8 +47,27 @@ def training_pairs(rows) -> list:
     return out
 
 
-def train(rows) -> tuple[IBMModel2, float]:
-    """A model trained on the rows, and the training time in seconds."""
+def train_ibm2(rows) -> tuple[IBMModel2, float]:
+    """IBM Model 2 trained on the rows (the seed's model, kept as a baseline)."""
     t0 = time.perf_counter()
     model = IBMModel2.train(training_pairs(rows))
+    return model, time.perf_counter() - t0
+
+
+def train(rows, candidates_of=None) -> tuple[LogLinear, float]:
+    """The log-linear model trained on rows with `command`, `dungeon` and `explanations`
+    ([{task, weight}]), and the training time in seconds. A row's negatives are its
+    dungeon's candidate tasks from the start, or `candidates_of(row)`."""
+    from .pairs import candidates
+    t0 = time.perf_counter()
+    examples = []
+    for r in rows:
+        target = {x["task"]: float(x["weight"]) for x in r["explanations"] if float(x["weight"]) > 0}
+        if not target or not r["command"].strip():
+            continue
+        cands = candidates_of(r) if candidates_of else candidates(r["dungeon"])
+        examples.append((r["command"], cands + [t for t in target if t not in cands], target))
+    if not examples:
+        raise BccError("no pair to train on")
+    model = LogLinear.train(examples)
     return model, time.perf_counter() - t0

@@ -9,7 +9,8 @@ dungeon's objects and the block types present in it. An atom is kept when a boun
 breadth-first exploration from the start makes it true, or when abstract interpretation
 says it may hold at some agent positions and not at others (a place to go to, perhaps
 far away); `blockIsType(gold, bedrock)` or `agentHasBlock(agent, bedrock)` are dropped.
-An atom already true at a start is no task from there.
+An atom already true at a start is no task from there, but an atom of where the agent is
+may be a conjunct of one ("bring the chair to green and come back to blue", from blue).
 """
 from __future__ import annotations
 
@@ -71,6 +72,9 @@ class TaskSpace:
         self.atoms = [a for a in _atoms(P.dungeon) if self._ever_true(a.text, seen) or
                       (P.maybe_satisfiable(a.text) and P.position_dependent(a.text))]
         self._by_text = {a.text: a for a in self.atoms}
+        # where the agent is, true at the start: a conjunct of a task that has the agent
+        # leave and come back ("bring the chair to green and come back to blue", from blue)
+        self.changeable = {a for a in self.atoms if P.position_dependent(a.text)}
 
     def _ever_true(self, text: str, states: list) -> bool:
         """Whether the expression holds in one of `states`, testing each distinct part of the
@@ -92,11 +96,16 @@ class TaskSpace:
         return bool(self.predicates.predicate(atom.text)(state))
 
     def tasks(self, start: bytes, max_conjuncts: int = MAX_CONJUNCTS) -> list[Task]:
-        """Candidate tasks from `start`: conjunctions of atoms false there, that may hold together."""
+        """Candidate tasks from `start`: atoms false there, and conjunctions of atoms that may
+        hold together, at least one false there (the others may hold already: they must
+        still hold at the end, "and come back here")."""
         open_atoms = [a for a in self.atoms if not self.holds(a, start)]
+        kept = [a for a in self.atoms if a in self.changeable and a not in open_atoms]
         out = [Task((a,)) for a in open_atoms]
         for k in range(2, max_conjuncts + 1):
-            for combo in itertools.combinations(open_atoms, k):
+            for combo in itertools.combinations(open_atoms + kept, k):
+                if all(a in kept for a in combo):
+                    continue
                 task = Task(tuple(sorted(combo, key=lambda a: a.text)))
                 if self.predicates.maybe_satisfiable(task.text):
                     out.append(task)

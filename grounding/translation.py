@@ -86,6 +86,23 @@ class IBMModel2:
         """log-likelihood of the known words under a task of unseen tokens (the baseline)."""
         return len(self.known(command_words)) * -math.log(len(self.vocabulary) + 1)
 
+    # ---- the interface interpret.rank uses (shared with loglinear.LogLinear) -------------
+    def tokens(self, command: str) -> list[str]:
+        return words(command)
+
+    def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
+        """log P(task | command) over candidate task texts: prior x likelihood, normalised."""
+        e = words(command)
+        scores = []
+        for text in tasks:
+            tokens = tuple(t for fn, args in re.findall(r"(\w+)\(([^)]*)\)", text)
+                           for t in [fn] + [a.strip() for a in args.split(",") if a.strip() != "agent"])
+            fns = " ".join(sorted(re.findall(r"(\w+)\(", text)))
+            scores.append(self.log_likelihood(e, tokens) + self.log_prior(fns))
+        top = max(scores)
+        z = top + math.log(sum(math.exp(s - top) for s in scores))
+        return [s - z for s in scores]
+
     # ---- training ----------------------------------------------------------------------
     @classmethod
     def train(cls, pairs: list, iterations: int = 10, model1_iterations: int = 5) -> IBMModel2:

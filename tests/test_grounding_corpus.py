@@ -9,7 +9,7 @@ from bcc.cli import main
 from bcc.errors import BccError
 from bcc.grounding import corpus
 from bcc.grounding.demonstration import from_actions
-from bcc.grounding.learn import train
+
 from click.testing import CliRunner
 from conftest import compiled
 
@@ -42,7 +42,7 @@ def test_demonstrations_replay_and_end_in_their_task():
 
 def test_held_out_accuracy_is_at_least_95_percent():
     rows = corpus.load()
-    model, _ = train([r for r in rows if r["split"] == "train"])
+    model, _ = corpus.train([r for r in rows if r["split"] == "train"])
     result = corpus.evaluate(model, [r for r in rows if r["split"] == "test"])
     assert result["accuracy"] >= 0.95, result["errors"]
 

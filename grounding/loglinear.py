@@ -1,0 +1,223 @@
+"""A log-linear (maximum-entropy) model of P(task | command) over a dungeon's candidate tasks.
+
+IBM Model 2 (translation.py) explains every word by a task token; people's commands are
+mostly words that name no token ("go to the door then into the next room"), and a
+generative model spends its probability on them. This model is discriminative:
+
+    P(task | command) = exp(sum_{c in C(command), f in F(task)} W[c, f]) / Z(candidates)
+
+C(command) are the command's features: a bias, its words and word pairs (spelling
+normalised against the training vocabulary, text.py), and its words tagged by where they
+stand (second half, last few words), so "bring the chair to blue then go to green" and
+its mirror image differ. F(task) are the task's features: its text, its lifted form
+(`agentInRoom blockInRoom`), each atom, each function and each function with one
+argument (`blockInRoom:blue`). The bias crossed with the task features is the prior over
+tasks; a word crossed with `blockInRoom:blue` is what IBM Model 2 calls t(word | token).
+Because task features are atoms and their parts, a model trained in one dungeon scores
+the tasks of another.
+
+Training maximises the conditional log-likelihood with an L2 penalty by L-BFGS-free
+full-batch gradient steps (Adam), numpy only. A pair whose task is latent (inferred from a
+demonstration: several weighted explanations) contributes log sum_{t in explanations}
+weight(t) P(t | command) -- EM's objective, differentiated directly.
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import BccError, read_input
+from .text import Speller, words
+
+FORMAT = "bcc-loglinear/1"
+L2 = 0.02          # penalty per weight, times the number of training pairs
+EPOCHS = 150
+RATE = 0.1
+TAIL = 4           # words at the end of a command tagged as such
+ATOM = re.compile(r"(\w+)\(([^)]*)\)")
+
+
+def task_features(task: str, agent: str = "agent") -> list[str]:
+    atoms = ATOM.findall(task)
+    out = ["T:" + task, "L:" + " ".join(sorted(f for f, _ in atoms)), f"N:{len(atoms)}"]
+    for fn, args in atoms:
+        names = [a.strip() for a in args.split(",")]
+        out.append(f"A:{fn}({', '.join(names)})")
+        out.append("F:" + fn)
+        for a in names:
+            if a != agent:
+                out.append(f"FA:{fn}:{a}")
+                out.append("X:" + a)
+    return out
+
+
+def command_features(tokens: list[str]) -> list[str]:
+    out = ["<bias>"]
+    m = len(tokens)
+    for j, w in enumerate(tokens):
+        out.append("w:" + w)
+        if j + 1 < m:
+            out.append(f"b:{w}_{tokens[j + 1]}")
+        out.append(("h2:" if 2 * j >= m else "h1:") + w)
+        if j >= m - TAIL:
+            out.append("e:" + w)
+    return list(dict.fromkeys(out))
+
+
+class _Segments:
+    """Sums of gathered rows per key, for a sparse 0/1 matrix given as (key, other) pairs."""
+
+    def __init__(self, keys: np.ndarray, others: np.ndarray, size: int):
+        order = np.argsort(keys, kind="stable")
+        self.others = others[order]
+        keys = keys[order]
+        self.present, self.starts = np.unique(keys, return_index=True)
+        self.size = size
+
+    def sum(self, M: np.ndarray) -> np.ndarray:
+        out = np.zeros((self.size, M.shape[1]))
+        out[self.present] = np.add.reduceat(M[self.others], self.starts, axis=0)
+        return out
+
+
+class LogLinear:
+    """The trained model: feature indices, the weight matrix and the speller."""
+
+    def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
+                 pairs: int = 0, iterations: int = 0):
+        self.command_index, self.task_index = command_index, task_index
+        self.W = weights
+        self.speller = speller
+        self.pairs, self.iterations = pairs, iterations
+        self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
+
+    # ---- interpreting ------------------------------------------------------------------
+    def tokens(self, command: str) -> list[str]:
+        return self.speller.normalise(command)
+
+    def known(self, command_words: list[str]) -> list[str]:
+        return [w for w in command_words if w in self.vocabulary]
+
+    def _command_vector(self, tokens: list[str]) -> np.ndarray:
+        idx = [self.command_index[f] for f in command_features(tokens) if f in self.command_index]
+        return self.W[idx].sum(axis=0)
+
+    def _task_matrix(self, tasks: list[str]) -> np.ndarray:
+        T = np.zeros((len(tasks), len(self.task_index)), dtype=np.float64)
+        for k, t in enumerate(tasks):
+            for f in task_features(t):
+                i = self.task_index.get(f)
+                if i is not None:
+                    T[k, i] = 1.0
+        return T
+
+    def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
+        """log P(task | command) for each candidate task text."""
+        s = self._task_matrix(tasks) @ self._command_vector(self.tokens(command))
+        s -= s.max()
+        return list(s - math.log(np.exp(s).sum()))
+
+    # ---- training ----------------------------------------------------------------------
+    @classmethod
+    def train(cls, examples: list, epochs: int = EPOCHS, l2: float = L2) -> LogLinear:
+        """`examples`: (command text, candidate task texts, {task text: weight}) -- the weights of
+        the pair's task (one task weighted 1 when known, a demonstration's explanations when not);
+        every weighted task must be among the candidates."""
+        speller = Speller.learn(c for c, _, _ in examples)
+        counts = Counter()
+        prepared = []
+        for command, candidates, target in examples:
+            feats = command_features(speller.normalise(command))
+            counts.update(feats)
+            prepared.append((feats, list(candidates), target))
+        command_index = {f: i for i, f in enumerate(sorted(counts))}
+        task_index: dict = {}
+        for _, candidates, _ in prepared:
+            for t in candidates:
+                for f in task_features(t):
+                    task_index.setdefault(f, len(task_index))
+        n, dc, dt = len(prepared), len(command_index), len(task_index)
+        rows, cols = [], []
+        groups: dict = {}          # candidate list -> (example indices, task matrix, target matrix rows)
+        for k, (feats, candidates, target) in enumerate(prepared):
+            for f in feats:
+                rows.append(k)
+                cols.append(command_index[f])
+            groups.setdefault(tuple(candidates), []).append(k)
+        rows_a, cols_a = np.array(rows), np.array(cols)
+        by_row = _Segments(rows_a, cols_a, n)       # S = X W: sum of W's rows per example
+        by_col = _Segments(cols_a, rows_a, dc)      # X^T G: sum of G's rows per feature
+        blocks = []
+        for candidates, members in groups.items():
+            T = np.zeros((len(candidates), dt))
+            for j, t in enumerate(candidates):
+                for f in task_features(t):
+                    T[j, task_index[f]] = 1.0
+            pos = {t: j for j, t in enumerate(candidates)}
+            prior = np.zeros((len(members), len(candidates)))
+            for r, k in enumerate(members):
+                for t, w in prepared[k][2].items():
+                    if t in pos and w > 0:
+                        prior[r, pos[t]] = w
+            blocks.append((np.array(members), T, np.log(np.maximum(prior, 1e-300)), prior > 0))
+        W = np.zeros((dc, dt))
+        m1, m2 = np.zeros_like(W), np.zeros_like(W)
+        lam = l2
+        for it in range(1, epochs + 1):
+            S = by_row.sum(W)
+            G = np.zeros((n, dt))
+            for members, T, log_prior, mask in blocks:
+                scores = S[members] @ T.T
+                scores -= scores.max(axis=1, keepdims=True)
+                p = np.exp(scores)
+                p /= p.sum(axis=1, keepdims=True)
+                q = np.where(mask, np.exp(np.minimum(scores + log_prior, 700)), 0.0)
+                q /= np.maximum(q.sum(axis=1, keepdims=True), 1e-300)
+                G[members] = (p - q) @ T
+            grad = by_col.sum(G) / n + lam * W
+            m1 = 0.9 * m1 + 0.1 * grad
+            m2 = 0.999 * m2 + 0.001 * grad * grad
+            W -= RATE * (m1 / (1 - 0.9 ** it)) / (np.sqrt(m2 / (1 - 0.999 ** it)) + 1e-8)
+        return cls(command_index, task_index, W, speller, pairs=n, iterations=epochs)
+
+    # ---- files -------------------------------------------------------------------------
+    def to_json(self) -> dict:
+        return {"format": FORMAT, "pairs": self.pairs, "iterations": self.iterations,
+                "command_features": sorted(self.command_index, key=self.command_index.get),
+                "task_features": sorted(self.task_index, key=self.task_index.get),
+                "weights": [[round(float(x), 5) for x in row] for row in self.W],
+                "word_counts": self.speller.counts}
+
+    @classmethod
+    def from_json(cls, data, path: str | None = None) -> LogLinear:
+        if not isinstance(data, dict) or data.get("format") != FORMAT:
+            raise BccError(f"not a grounding model: expected \"format\": \"{FORMAT}\"", path)
+        try:
+            cf, tf = [str(x) for x in data["command_features"]], [str(x) for x in data["task_features"]]
+            W = np.array(data["weights"], dtype=np.float64).reshape(len(cf), len(tf))
+            counts = {str(w): int(c) for w, c in data["word_counts"].items()}
+            return cls({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, W, Speller(counts),
+                       pairs=int(data.get("pairs", 0)), iterations=int(data.get("iterations", 0)))
+        except (KeyError, TypeError, ValueError, AttributeError) as exc:
+            raise BccError(f"malformed grounding model: {exc}", path) from None
+
+    def save(self, path: str | Path) -> None:
+        from ..atomic import write_text
+        write_text(path, json.dumps(self.to_json(), separators=(",", ":")) + "\n")
+
+    @classmethod
+    def load(cls, path: str | Path) -> LogLinear:
+        text = read_input(path, "model")
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise BccError(f"invalid JSON: {exc.msg}", str(path), exc.lineno, exc.colno) from None
+        return cls.from_json(data, str(path))
+
+
+__all__ = ["LogLinear", "words", "task_features", "command_features"]

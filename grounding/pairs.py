@@ -1,0 +1,153 @@
+"""Command/task pairs from a JSON Lines file, and evaluating a fresh model on them.
+
+A line is an object with at least `command` and `task` (a goal expression) and optionally
+`dungeon`, `level` and `id` -- the shape of the cleanup-amt corpus. `evaluate` trains a
+model on training pairs only (given tasks, or tasks inferred from demonstrations planned
+in the dungeon, as the crowd workers saw one) and scores it on held-out pairs: a
+prediction is right when it is the same goal, conjunctions compared as sets.
+"""
+from __future__ import annotations
+
+import json
+import random
+import time
+from collections import Counter
+from pathlib import Path
+
+from ..errors import BccError, read_input
+from .tasks import canonical
+
+MODES = ("tasks", "demonstrations")
+
+
+def load(path: str | Path, dungeon: str | None = None, levels=None) -> list[dict]:
+    """The pairs of a file, each with `id`, `command`, `task` (canonical), `dungeon` and `level`;
+    every line checked (bad lines are bad input: file:line:col)."""
+    text = read_input(path, "pairs")
+    out = []
+    for n, line in enumerate(text.splitlines(), 1):
+        if not line.strip():
+            continue
+        try:
+            row = json.loads(line)
+        except json.JSONDecodeError as exc:
+            raise BccError(f"invalid JSON line: {exc.msg}", str(path), n, exc.colno) from None
+        if not isinstance(row, dict):
+            raise BccError("a line must be a JSON object with \"command\" and \"task\"", str(path), n, 1)
+        for key in ("command", "task"):
+            if not isinstance(row.get(key), str) or not row[key].strip():
+                raise BccError(f"\"{key}\" must be a non-empty string", str(path), n, 1)
+        ref = row.get("dungeon", dungeon)
+        if ref is None:
+            raise BccError("the pair names no dungeon: give one with --dungeon", str(path), n, 1)
+        if not isinstance(ref, str):
+            raise BccError("\"dungeon\" must be a string", str(path), n, 1)
+        level = row.get("level")
+        if levels and level not in levels:
+            continue
+        out.append({"id": row.get("id", n), "command": row["command"], "task": canonical(row["task"]),
+                    "dungeon": ref, "level": str(level) if level is not None else "all", "line": n,
+                    "path": str(path)})
+    if not out:
+        raise BccError("no pairs" + (f" at level {', '.join(levels)}" if levels else ""), str(path))
+    return out
+
+
+def check_tasks(rows: list[dict]) -> None:
+    """Every pair's task must be a candidate task of its dungeon from the start."""
+    from .learn import space_for
+    for row in rows:
+        space = space_for(row["dungeon"])
+        if space.task(row["task"]) is None or row["task"] not in candidates(row["dungeon"]):
+            raise BccError(f"{row['task']!r} is not a task of dungeon {row['dungeon']!r} from its start "
+                           f"(its atoms: {', '.join(a.text for a in space.atoms)})", row["path"], row["line"], 1)
+
+
+_candidates: dict = {}
+
+
+def candidates(ref: str) -> list[str]:
+    """Candidate task texts of a dungeon from its start (cached per process)."""
+    if ref not in _candidates:
+        from .learn import space_for
+        space = space_for(ref)
+        _candidates[ref] = [t.text for t in space.tasks(space.model.initial)]
+    return _candidates[ref]
+
+
+def demonstrated(ref: str, task: str, time_limit: float = 60.0) -> dict:
+    """{task: weight} the seed's pipeline infers from an optimal demonstration of `task`."""
+    key = (ref, task)
+    if key not in _explained:
+        from ..solvers import Budget
+        from .demonstration import from_actions
+        from .interpret import plan
+        from .learn import explain, space_for
+        result = plan(ref, task, None, Budget(time_limit=time_limit, max_memory_mb=Budget.default().max_memory_mb))
+        if not result.solved:
+            raise BccError(f"no demonstration of {task!r} in {ref!r}: {result.message}")
+        demo = from_actions(space_for(ref).model, result.plan)
+        _explained[key] = {e["task"]: e["weight"] for e in explain(demo, ref)}
+    return _explained[key]
+
+
+_explained: dict = {}
+
+
+def examples(rows: list[dict], mode: str) -> list:
+    """Training examples of the log-linear model: (command, candidates, {task: weight})."""
+    out = []
+    for r in rows:
+        target = {r["task"]: 1.0} if mode == "tasks" else demonstrated(r["dungeon"], r["task"])
+        cands = candidates(r["dungeon"])
+        extra = [t for t in target if t not in cands]
+        out.append((r["command"], cands + extra, target))
+    return out
+
+
+def train(rows: list[dict], mode: str = "tasks"):
+    from .loglinear import LogLinear
+    return LogLinear.train(examples(rows, mode))
+
+
+def predict(model, rows: list[dict]) -> list[str]:
+    out = []
+    for r in rows:
+        cands = candidates(r["dungeon"])
+        scores = model.log_posterior(r["command"], cands)
+        out.append(cands[max(range(len(cands)), key=scores.__getitem__)])
+    return out
+
+
+def folds(rows: list[dict], k: int, seed: int = 0) -> list[tuple[list, list]]:
+    """k (train, test) splits: a seeded shuffle, every k-th pair held out once."""
+    order = list(range(len(rows)))
+    random.Random(seed).shuffle(order)
+    splits = []
+    for f in range(k):
+        held = set(order[f::k])
+        splits.append(([r for i, r in enumerate(rows) if i not in held], [r for i, r in enumerate(rows) if i in held]))
+    return splits
+
+
+def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None) -> dict:
+    """Train a fresh model on each split's training pairs; score its held-out pairs."""
+    pairs, seconds = [], 0.0
+    for k, (train_rows, test_rows) in enumerate(splits):
+        t0 = time.perf_counter()
+        model = train(train_rows, mode)
+        seconds += time.perf_counter() - t0
+        for r, got in zip(test_rows, predict(model, test_rows)):
+            pairs.append({"id": r["id"], "level": r["level"], "command": r["command"], "task": r["task"],
+                          "predicted": got, "correct": got == r["task"]})
+        if progress:
+            progress(k + 1, len(splits))
+    by_level = {}
+    for level in sorted({p["level"] for p in pairs}):
+        mine = [p for p in pairs if p["level"] == level]
+        right = sum(p["correct"] for p in mine)
+        by_level[level] = {"correct": right, "total": len(mine), "accuracy": right / len(mine)}
+    confusion = Counter((p["task"], p["predicted"]) for p in pairs)
+    return {"mode": mode, "accuracy": sum(p["correct"] for p in pairs) / len(pairs), "by_level": by_level,
+            "confusion": [{"task": t, "predicted": g, "count": c} for (t, g), c in sorted(confusion.items())],
+            "train_seconds": round(seconds / len(splits), 3), "pairs": pairs}
