@@ -35,9 +35,10 @@ from ..errors import BccError, read_input
 from .text import Speller, words
 
 FORMAT = "bcc-loglinear/1"
-L2 = 0.02          # penalty per weight, times the number of training pairs
+L2 = 0.005         # penalty per weight (on the mean log-likelihood): tuned by cross-validation
 EPOCHS = 150
 RATE = 0.1
+MIN_COUNT = 2      # training commands a feature must occur in
 TAIL = 4           # words at the end of a command tagged as such
 ATOM = re.compile(r"(\w+)\(([^)]*)\)")
 
@@ -135,7 +136,8 @@ class LogLinear:
             feats = command_features(speller.normalise(command))
             counts.update(feats)
             prepared.append((feats, list(candidates), target))
-        command_index = {f: i for i, f in enumerate(sorted(counts))}
+        # a feature of a single command says more about that command than about the language
+        command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= MIN_COUNT))}
         task_index: dict = {}
         for _, candidates, _ in prepared:
             for t in candidates:
@@ -146,6 +148,8 @@ class LogLinear:
         groups: dict = {}          # candidate list -> (example indices, task matrix, target matrix rows)
         for k, (feats, candidates, target) in enumerate(prepared):
             for f in feats:
+                if f not in command_index:
+                    continue
                 rows.append(k)
                 cols.append(command_index[f])
             groups.setdefault(tuple(candidates), []).append(k)

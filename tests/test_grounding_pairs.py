@@ -1,0 +1,120 @@
+"""Command/task pairs without demonstrations (issue 20): bcc corpus evaluate --train, bcc train --pairs,
+the log-linear model and spelling normalisation. The pairs here are made up for the tests."""
+from __future__ import annotations
+
+import json
+import random
+
+from bcc.cli import main
+from bcc.grounding.loglinear import LogLinear
+from bcc.grounding.text import Speller, edit_distance
+from click.testing import CliRunner
+
+ROOMS = ["red", "green", "blue"]
+GO = ["go to the {r} room", "walk into the {r} room", "head for the {r} room", "move to the {r} room please"]
+CARRY = ["take the chair to the {r} room", "bring the chair into the {r} room", "push the chair to the {r} room"]
+BOTH = ["put the chair in the {c} room then go to the {r} room", "move the chair to {c} and walk to {r}"]
+
+
+def synthetic(n: int, seed: int) -> list[dict]:
+    rng = random.Random(seed)
+    out = []
+    for i in range(n):
+        kind = rng.choice(["go", "carry", "both"])
+        if kind == "go":
+            r = rng.choice(["red", "green"])         # the agent starts in blue
+            out.append({"id": i, "level": "L2", "command": rng.choice(GO).format(r=r), "task": f"agentInRoom(agent, {r})"})
+        elif kind == "carry":
+            c = rng.choice(["green", "blue"])        # the chair starts in red
+            out.append({"id": i, "level": "L1", "command": rng.choice(CARRY).format(r=c), "task": f"blockInRoom(chair, {c})"})
+        else:
+            c, r = rng.choice([("blue", "green"), ("green", "blue")])
+            # conjuncts in either order: compared as sets
+            task = (f"blockInRoom(chair, {c}) and agentInRoom(agent, {r})" if i % 2 else
+                    f"agentInRoom(agent, {r}) and blockInRoom(chair, {c})")
+            out.append({"id": i, "level": "L1", "command": rng.choice(BOTH).format(c=c, r=r), "task": task})
+    return out
+
+
+def write(path, rows):
+    path.write_text("".join(json.dumps(r) + "\n" for r in rows))
+    return str(path)
+
+
+def run(*args):
+    return CliRunner().invoke(main, list(args))
+
+
+def test_evaluate_train_test_json_shape_and_accuracy(tmp_path):
+    train = write(tmp_path / "train.jsonl", synthetic(120, 1))
+    test = write(tmp_path / "test.jsonl", synthetic(40, 2))
+    r = run("corpus", "evaluate", "--train", train, "--test", test, "--dungeon", "cleanup", "--from", "tasks", "--json")
+    assert r.exit_code == 0, r.output
+    out = json.loads(r.stdout)
+    assert set(out) >= {"accuracy", "by_level", "pairs", "confusion"}
+    assert set(out["by_level"]) == {"L1", "L2"}
+    assert sum(v["total"] for v in out["by_level"].values()) == 40
+    assert {"id", "command", "task", "predicted", "correct"} <= set(out["pairs"][0])
+    # templated commands over three rooms: a model that learned anything gets nearly all
+    assert out["accuracy"] >= 0.9, [p for p in out["pairs"] if not p["correct"]]
+    both = [p for p in out["pairs"] if " and " in p["task"]]
+    assert both and all(p["task"].startswith("agentInRoom") for p in both)   # canonical order
+
+
+def test_folds_levels_and_both_modes(tmp_path):
+    train = write(tmp_path / "pairs.jsonl", synthetic(60, 3))
+    r = run("corpus", "evaluate", "--train", train, "--folds", "3", "--level", "L2", "--dungeon", "cleanup", "--json")
+    assert r.exit_code == 0, r.output
+    out = json.loads(r.stdout)
+    assert set(out["modes"]) == {"tasks", "demonstrations"}
+    assert set(out["by_level"]) == {"L2"} and out["by_level"]["L2"]["total"] == sum(
+        row["level"] == "L2" for row in synthetic(60, 3))
+    plain = run("corpus", "evaluate", "--train", train, "--folds", "3", "--dungeon", "cleanup", "--from", "tasks")
+    assert plain.exit_code == 0 and "confusion" in plain.stdout and "L1" in plain.stdout
+
+
+def test_bad_pairs_are_bad_input(tmp_path):
+    bad = tmp_path / "bad.jsonl"
+    bad.write_text('{"command": "go to the red room", "task": "agentInRoom(agent, red)"}\n{"command": 1}\n')
+    r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
+    assert r.exit_code == 2 and "bad.jsonl:2:1:" in r.stderr
+    bad.write_text('{"command": "go to the red room", "task": "agentInRoom(agent, purple)"}\n')
+    r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
+    assert r.exit_code == 2 and "bad.jsonl:1:1:" in r.stderr and "not a task" in r.stderr
+    bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)"\n')
+    r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup")
+    assert r.exit_code == 2 and "invalid JSON" in r.stderr
+    ok = write(tmp_path / "ok.jsonl", synthetic(10, 4))
+    r = run("corpus", "evaluate", "--train", ok)
+    assert r.exit_code == 2 and "--dungeon" in r.stderr
+    assert run("corpus", "evaluate", "--folds", "3").exit_code == 2
+
+
+def test_train_pairs_then_command_cleanup(tmp_path):
+    pairs = write(tmp_path / "pairs.jsonl", synthetic(150, 5))
+    db = str(tmp_path / "d.sqlite")
+    r = run("train", "--pairs", pairs, "--dungeon", "cleanup", "--db", db, "--json")
+    assert r.exit_code == 0, r.output
+    assert json.loads(r.stdout)["pairs"] == 150
+    r = run("command", "cleanup", "take the chiar to the blue room", "--db", db, "--json")   # a typo
+    assert r.exit_code == 0, r.output
+    out = json.loads(r.stdout)
+    assert out["task"] == "blockInRoom(chair, blue)" and out["solved"]
+    assert out["cost"] == 20     # derived by hand in tests/test_cleanup.py
+
+
+def test_spelling_is_corrected_against_training_words():
+    speller = Speller({"chair": 5, "green": 9, "room": 20, "the": 40, "go": 30})
+    assert speller.normalise("go to the gren rooom with the chiar") == ["go", "to", "the", "green", "room", "with",
+                                                                        "the", "chair"]
+    assert edit_distance("chiar", "chair", 2) == 1 and edit_distance("abc", "xyzw", 1) == 2
+
+
+def test_model_file_round_trip(tmp_path):
+    tasks = ["agentInRoom(agent, red)", "agentInRoom(agent, green)"]
+    ex = [("go to red", tasks, {tasks[0]: 1.0}), ("go to green", tasks, {tasks[1]: 1.0})] * 3
+    model = LogLinear.train(ex, epochs=60)
+    model.save(tmp_path / "m.json")
+    again = LogLinear.load(tmp_path / "m.json")
+    a, b = model.log_posterior("go to green", tasks), again.log_posterior("go to green", tasks)
+    assert b[1] > b[0] and abs(a[1] - b[1]) < 1e-3
