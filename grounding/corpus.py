@@ -144,6 +144,7 @@ def generate(n: int = 360, seed: int = 0, out: Path = CORPUS_DIR, progress=None,
         if progress:
             progress(len(rows), n)
     write_text(out / "pairs.jsonl", "".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows))
+    write_model(out)
     return {"pairs": len(rows), "train": sum(r["split"] == "train" for r in rows),
             "test": sum(r["split"] == "test" for r in rows), "dungeons": len(refs),
             "inferred_top_is_true_task": inferred / len(rows), "seconds": round(time.perf_counter() - t0, 1)}
@@ -306,15 +307,39 @@ class _Cache:
 _cache = _Cache()
 
 
+MODEL = CORPUS_DIR / "model.json"   # the model of the training split, shipped: training compiles every dungeon
+
+
 def corpus_model(split: str | None = "train"):
     """The grounding model trained on the shipped corpus (`split` rows, or all with None),
-    cached in memory; training takes seconds, so nothing is shipped pre-trained."""
+    cached in memory; the training split's is shipped (`MODEL`, written by `generate` or
+    `write_model`) and used while the digest it records matches the pairs."""
     key = f"{digest()}:{split}"
     if _cache.digest != key:
-        rows = [r for r in load() if split is None or r["split"] == split]
-        _cache.model, _ = train(rows)
+        _cache.model = _shipped(key)
+        if _cache.model is None:
+            rows = [r for r in load() if split is None or r["split"] == split]
+            _cache.model, _ = train(rows)
         _cache.digest = key
     return _cache.model
+
+
+def _shipped(key: str):
+    from .loglinear import LogLinear
+    try:
+        data = json.loads(MODEL.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if not isinstance(data, dict) or data.get("corpus") != key:
+        return None
+    return LogLinear.from_json(data, str(MODEL))
+
+
+def write_model(out: Path = CORPUS_DIR) -> None:
+    """Train on the training split and ship the model beside the pairs."""
+    model, _ = train([r for r in load(out / "pairs.jsonl") if r["split"] == "train"])
+    write_text(out / "model.json", json.dumps(model.to_json() | {"corpus": f"{digest(out / 'pairs.jsonl')}:train"},
+                                              separators=(",", ":")) + "\n")
 
 
 if __name__ == "__main__":

@@ -137,7 +137,8 @@ class LogLinear:
             counts.update(feats)
             prepared.append((feats, list(candidates), target))
         # a feature of a single command says more about that command than about the language
-        command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= MIN_COUNT))}
+        least = MIN_COUNT if len(prepared) >= 50 else 1
+        command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= least))}
         task_index: dict = {}
         for _, candidates, _ in prepared:
             for t in candidates:
@@ -153,7 +154,7 @@ class LogLinear:
                 rows.append(k)
                 cols.append(command_index[f])
             groups.setdefault(tuple(candidates), []).append(k)
-        rows_a, cols_a = np.array(rows), np.array(cols)
+        rows_a, cols_a = np.array(rows, dtype=np.int64), np.array(cols, dtype=np.int64)
         by_row = _Segments(rows_a, cols_a, n)       # S = X W: sum of W's rows per example
         by_col = _Segments(cols_a, rows_a, dc)      # X^T G: sum of G's rows per feature
         blocks = []
@@ -194,7 +195,7 @@ class LogLinear:
         return {"format": FORMAT, "pairs": self.pairs, "iterations": self.iterations,
                 "command_features": sorted(self.command_index, key=self.command_index.get),
                 "task_features": sorted(self.task_index, key=self.task_index.get),
-                "weights": [[round(float(x), 5) for x in row] for row in self.W],
+                "weights": [[round(float(x), 4) for x in row] for row in self.W],
                 "word_counts": self.speller.counts}
 
     @classmethod
