@@ -188,6 +188,7 @@ def main() -> int:
     ap.add_argument("--timeout", type=float, default=30.0, help="seconds before an input counts as a hang [30]")
     ap.add_argument("--memory", type=int, default=3000, help="address-space limit per worker, MB [3000]")
     ap.add_argument("--json", default=str(HERE / "fuzz.json"), help="where to write the JSON [bench/fuzz.json]")
+    ap.add_argument("--seeds", help="comma-separated seeds to run instead (e.g. the failures of a run)")
     ap.add_argument("--show", type=int, metavar="SEED", help="write input SEED's files to --out and exit")
     ap.add_argument("--out", default=".", help="with --show: a directory")
     args = ap.parse_args()
@@ -198,7 +199,7 @@ def main() -> int:
         path = fh.write_case(case, out)
         print(f"{case.label}: bcc {' '.join(fh.COMMAND)} {path} {' '.join(map(repr, case.args))}")
         return 0
-    seeds = list(range(args.first, args.first + args.inputs))
+    seeds = [int(x) for x in args.seeds.split(",")] if args.seeds else list(range(args.first, args.first + args.inputs))
     start = time.perf_counter()
     results = run(seeds, args.workers, args.timeout, args.memory, progress=True)
     summary = summarize(results)

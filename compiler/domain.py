@@ -150,6 +150,8 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
             raise error_at(data, "extends", f"domains extend each other in a cycle: {names}")
         base = load_domain(base_path, chain)
     check_keys(data, DOMAIN_KEYS, {"domain"} if base else {"domain", "classes", "actions"}, "a domain")
+    if data.get("types") is not None and not isinstance(data["types"], YMap):
+        raise error_at(data, "types", "`types` must map type names to their values")
     enums = _load_enums(data.get("types"), base.enums if base else {})
     constants = dict(base.constants) if base else {}
     for name, values in _load_constants(data).items():

@@ -478,6 +478,12 @@ class Grounder:
             self.writes.append(("<grid>", obj.keys[1]))
             return ir.SetCell(*obj.keys, value)
         self.writes.append((obj.cls, attr))
+        cdef = self.dom.classes[obj.cls]
+        if isinstance(value, ir.Const) and cdef.attrs[attr].type == "int":
+            rng = self.attr_range(cdef, attr)
+            if rng is not None and not rng[0] <= value.value <= rng[1]:
+                raise ctx.error(node, f"an effect sets {obj.cls}.{attr} to {value.value}, "
+                                      f"outside its range [{rng[0]}, {rng[1]}]")
         if isinstance(obj, ObjRef):
             return ir.SetVar(ir.StateVar(obj.name, obj.cls, attr, value.type), value)
         if all(isinstance(k, ir.Const) for k in obj.keys):

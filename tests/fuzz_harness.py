@@ -25,6 +25,7 @@ line), "internal" (an exception: a bug), "exit-3"/"exit-N" (any other exit code)
 from __future__ import annotations
 
 import copy
+import os
 import random
 import re
 import traceback
@@ -35,7 +36,9 @@ import yaml
 
 import bcc
 
-ROOT = Path(__file__).resolve().parent.parent
+# The shipped files the cases start from; BCC_FUZZ_ROOT=another checkout replays the cases
+# of that checkout's file set (seed i is the same input only over the same files).
+ROOT = Path(os.environ.get("BCC_FUZZ_ROOT") or Path(__file__).resolve().parent.parent)
 DOMAINS = {p.stem: p.read_text(encoding="utf-8") for p in sorted((ROOT / "domains").glob("*.yaml"))}
 DUNGEONS = {p.stem: p.read_text(encoding="utf-8") for p in sorted((ROOT / "dungeons").glob("*.yaml"))}
 BCC_DIR = str(Path(bcc.__file__).resolve().parent)  # the code under test (installed or not)

@@ -82,6 +82,10 @@ DOMAIN_CASES = {
                                         rf"more than {MAX_GROUND_DEPTH} levels deep once the functions"),
     "a keyed class of 2^40 objects": (MINECRAFT.replace("slot: {type: int, range: [0, 8]}",
                                                         "slot: {type: int, range: [0, 1099511627775]}"), r"too large"),
+    "an effect sets a constant out of range": (MINECRAFT.replace("effect: a.verticalDirection = 1",
+                                                                 "effect: a.verticalDirection = 256"),
+                                               r"sets agent.verticalDirection to 256, outside its range \[0, 1\]"),
+    "types: abc": (re.sub(r"^types:\n(?:(?:  .*)?\n)*", "types: abc\n", MINECRAFT, flags=re.M), r"`types` must map"),
     "a keyed class of 10^6 objects": (MINECRAFT.replace("slot: {type: int, range: [0, 8]}",
                                                         "slot: {type: int, range: [0, 999999]}"), r"at most 65,536"),
 }
