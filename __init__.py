@@ -10,6 +10,8 @@ try:
 except PackageNotFoundError:  # running from a source tree that was never installed
     __version__ = "0.0.0"
 
-from .errors import BccError  # noqa: E402
-
-__all__ = ["BccError", "__version__"]
+if __package__:  # imported as bcc (or as the checkout's folder name, by pytest)
+    from .errors import BccError  # noqa: E402
+    __all__ = ["BccError", "__version__"]
+# else: pytest collecting a checkout whose folder is no Python name (e.g. `bcc-main`)
+# imports this file alone, as `__init__`; the tests use the installed bcc.

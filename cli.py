@@ -14,7 +14,9 @@ import click
 from . import __version__
 from .errors import BccError, ModelError
 
-EXIT_OK, EXIT_NO_SOLUTION, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+from .cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, print_result, progress_enabled,
+                         solver_flags, solver_request, write_output)
+from .exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
 
 
 class BccGroup(click.Group):
@@ -31,7 +33,7 @@ class BccGroup(click.Group):
             ctx.exit(EXIT_BAD_INPUT)
         except KeyboardInterrupt:
             click.echo("interrupted", err=True)
-            ctx.exit(130)
+            ctx.exit(EXIT_INTERRUPTED)
         except BrokenPipeError:  # `bcc solve ... | head -1`: the reader left; not an error of ours
             sys.stdout = None
             os._exit(0)
@@ -42,29 +44,6 @@ class BccGroup(click.Group):
                 raise
             click.echo(f"bcc: internal error: {type(exc).__name__}: {exc} (set BCC_DEBUG=1 for a traceback)", err=True)
             ctx.exit(EXIT_INTERNAL)
-
-
-def emit_json(data) -> None:
-    click.echo(json.dumps(data, indent=2, default=str))
-
-
-def compile_model(dungeon: str, goal: str | None):
-    """Compile what the user named; its warnings (e.g. an unused legend character) go to
-    stderr, one `file:line:col: warning: ...` line each."""
-    from .compiler import compile_dungeon
-    model = compile_dungeon(dungeon, goal=goal)
-    for warning in model.report.get("warnings", ()):
-        click.echo(warning, err=True)
-    return model
-
-
-def write_output(path: str, text: str) -> None:
-    from .atomic import write_text
-    write_text(path, text)
-
-
-goal_option = click.option("--goal", metavar="EXPR", help="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)'.")
-json_option = click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
 
 
 @click.group(cls=BccGroup, context_settings={"help_option_names": ["-h", "--help"]})
@@ -117,42 +96,24 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal):
     click.echo(f"goal: {r['goal']}")
 
 
-def progress_enabled():
-    if not sys.stderr.isatty():
-        return None
-
-    def report(expanded, generated, stored, seconds):
-        click.echo(f"\r  {seconds:7.1f}s  expanded {expanded:>12,}  stored {stored:>12,}", err=True, nl=False)
-    return report
-
-
 @main.command("solve")
 @click.argument("dungeon")
 @click.option("--solver", default="astar", show_default=True, help="Solver name (see `bcc solvers`).")
-@click.option("--heuristic", default=None, help="For informed solvers: auto (default for astar), pdb, manhattan, blind, or on the relaxed view hmax, lmcut (admissible), hadd, hff (greedy; hff gives gbfs preferred actions).")
-@click.option("--weight", type=click.FloatRange(min=1), default=None, help="f = g + W h for astar/wastar (W > 1: faster, cost <= W x optimal).")
 @json_option
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
 @click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help="Stop after this many seconds.")
 @click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help="Stop when the process uses this much memory [default: half the RAM].")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE, one action a line (atomically).")
-@click.option("--model", "learner", type=click.Choice(["tabular", "oo"]), default=None, help="rmax: the model learner.")
-@click.option("--episodes", type=click.IntRange(min=1), default=None, help="Learning solvers: number of episodes.")
-@click.option("--seed", type=int, default=None, help="Learning solvers: random seed.")
-@click.option("--gamma", type=float, default=None, help="Learning solvers: discount [default: 0.99].")
-@click.option("--delta", type=float, default=None, help="rmax: value iteration stops when no value changes more [default: 0.01].")
-@click.option("--known-after", "m", type=int, default=None, metavar="M",
-              help="rmax: visits before a (state, action) is known [default: 1, the world is deterministic].")
-@click.option("--max-steps", type=int, default=None,
-              help="Learning solvers: steps before an episode is cut [default: rmax 1000, qlearning 200].")
-@click.option("--fd-search", metavar="CONFIG", default=None, help="fd: Fast Downward search [default: astar(lmcut())].")
+@solver_flags
 @goal_option
-def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limit, max_memory, output, learner,
-              episodes, seed, gamma, delta, m, max_steps, fd_search, goal):
-    """Solve DUNGEON; print the plan. Exit 0 solved, 1 no plan or a budget ran out."""
-    from .solvers import Budget, LEARNING, get_solver, learning_options, optimal_cost
-    from .solvers.heuristics import HEURISTICS
+def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, output, goal, **solver_options):
+    """Solve DUNGEON: the plan on stdout (one action a line), the summary on stderr.
+    Exit 0 solved, 1 no plan or a budget ran out. Options that a solver does not take
+    are refused; `bcc solvers` lists each solver's."""
+    from .solvers import Budget, LEARNING, get_solver, optimal_cost
     from .solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
+    solve = get_solver(solver)
+    options = solver_request(solver, solver_options)   # bad options are bad input, before anything runs
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
@@ -161,62 +122,20 @@ def solve_cmd(dungeon, solver, heuristic, weight, as_json, max_states, time_limi
     try:
         with hard_limits(budget):
             model = compile_model(dungeon, goal)
-            solve = get_solver(solver)
             if output:
                 from .atomic import check_writable
                 check_writable(output)   # before a long solve, not after it
-            options = {}
-            if heuristic is not None:
-                if heuristic not in HEURISTICS and heuristic != "auto":
-                    raise BccError(f"unknown heuristic {heuristic!r}; available: auto, {', '.join(HEURISTICS)}")
-                if solver == "bfs":
-                    raise BccError("bfs uses no heuristic; drop --heuristic or pick an informed solver (astar, ...)")
-                options["heuristic"] = heuristic
-            if weight is not None:
-                if solver not in ("astar", "wastar"):
-                    raise BccError("--weight applies to astar and wastar only")
-                options["weight"] = weight
-            if fd_search is not None:
-                if solver != "fd":
-                    raise BccError("--fd-search applies to the fd solver only")
-                options["search"] = fd_search
-            options.update(learning_options(
-                solver, {"learner": learner, "delta": delta, "m": m, "episodes": episodes, "seed": seed,
-                         "gamma": gamma, "max_steps": max_steps}, LEARNING_FLAGS))
             progress = progress_enabled()
             if solver in LEARNING:  # converged_episode compares with A*'s cost, found within half the budget
                 options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
             result = solve(model, deadline.remaining(), progress=progress, **options)
-            if progress:
-                click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+            clear_progress(progress)
     except BudgetExceeded as exc:  # ran out outside a solver's own checks (compiling, a heuristic's table, ...)
         result = exceeded_result(solver, exc.which, deadline.elapsed())
     if output and result.solved:
         write_output(output, "".join(a + "\n" for a in result.plan))
-    if model is None:
-        _print_result(dungeon, dungeon, goal, result, as_json)
-    else:
-        _print_result(model.name, model.path, model.goal_text, result, as_json)
-    sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
-
-
-def _print_result(name: str, path, goal_text, result, as_json: bool) -> None:
-    if as_json:
-        emit_json({"dungeon": name, "goal": goal_text, **result.to_json()})
-    elif result.solved:
-        steps = f"{len(result.plan)} step" + ("" if len(result.plan) == 1 else "s")
-        click.echo(f"solved {name} with {result.solver}: cost {result.cost}, {steps}, "
-                   f"{result.expanded:,} expanded, {result.seconds:.3f} s")
-        for a in result.plan:
-            click.echo(a)
-    else:
-        click.echo(f"not solved: {result.message} ({result.expanded:,} expanded, {result.seconds:.3f} s)")
-    if not result.solved and path is not None:
-        click.echo(f"{path}: {result.message}", err=True)
-
-
-LEARNING_FLAGS = {"learner": "--model", "delta": "--delta", "m": "--known-after", "episodes": "--episodes",
-                  "seed": "--seed", "gamma": "--gamma", "max_steps": "--max-steps"}
+    name, path, goal_text = (dungeon, dungeon, goal) if model is None else (model.name, model.path, model.goal_text)
+    sys.exit(print_result(result, name, path, as_json, {"dungeon": name, "goal": goal_text}))
 
 
 def _read_plan_arg(plan: str):
@@ -303,15 +222,21 @@ def list_cmd(as_json):
 @main.command("solvers")
 @json_option
 def solvers_cmd(as_json):
-    """List the available solvers (built-in and plugins)."""
+    """List the solvers (built-in and plugins), each with its options, and say which
+    cannot run here and how to get them."""
     from .solvers import describe_solvers
     solvers = describe_solvers()
     if as_json:
         emit_json({"solvers": solvers})
         return
     width = max(map(len, solvers))
-    for name, doc in solvers.items():
-        click.echo(f"  {name:<{width}} {doc}")
+    for name, info in solvers.items():
+        click.echo(f"  {name:<{width}} {info['description']}")
+        if info["unavailable"]:
+            click.echo(f"  {'':<{width}} unavailable: {info['unavailable']}")
+        for o in info["options"]:
+            click.echo(f"  {'':<{width}}   --{o['name'].replace('_', '-')}: {o['help']}; {o['accepts']} "
+                       f"[default: {o['default']}]")
 
 
 @main.group("generate")
@@ -379,14 +304,15 @@ def generate_rooms_cmd(stones, name, output, as_json):
 def learn_curve_cmd(dungeon, learners, solvers, episodes, n_seeds, seed, workers, time_limit, output, as_json, goal):
     """Steps per episode of the learning solvers on DUNGEON: R-max with each model
     learner and Q-learning, each with --seeds seeds. Exit 1 if a run failed or ran out of time."""
-    from .learning_curves import learners_from, learning_curves, mean_curve
+    from .learning_curves import learners_from, learning_curves, mean_curve, plot_curves
     names = learners_from(learners, solvers)
     if output:
-        _plot_curves({}, None, "", None)  # a missing matplotlib is an error before anything runs
+        from .extras import pyplot
+        pyplot()  # a missing matplotlib is an error before anything runs
     data = learning_curves(dungeon, goal=goal, learners=names, episodes=episodes,
                            seeds=list(range(seed, seed + n_seeds)), workers=workers, time_limit=time_limit)
     if output:
-        _plot_curves(data["runs"], data["optimal_cost"], f"{data['dungeon']}: steps per episode", output)
+        plot_curves(data["runs"], data["optimal_cost"], f"{data['dungeon']}: steps per episode", output)
     stopped = [(name, s, error or f"stopped by its time limit after {len(steps)} of {episodes} episodes")
                for name, run in data["runs"].items()
                for s, error, status, steps in zip(data["seeds"], run["errors"], run["status"], run["steps"])
@@ -404,46 +330,6 @@ def learn_curve_cmd(dungeon, learners, solvers, episodes, n_seeds, seed, workers
     for name, s, why in stopped:
         click.echo(f"{data['dungeon']}: {name} seed {s}: {why}", err=True)
     sys.exit(EXIT_NO_SOLUTION if stopped else EXIT_OK)
-
-
-def _plot_curves(runs: dict, optimal, title: str, output: str | None) -> None:
-    """Mean steps per episode of each learner over its seeds, with the min-max band;
-    with output None, only check that matplotlib is there."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        raise BccError('plotting needs matplotlib: pip install "bcc[plot]"') from None
-    if output is None:
-        return
-    import io
-    from .learning_curves import mean_curve
-    fig, ax = plt.subplots(figsize=(7, 4))
-    for name, run in runs.items():
-        mean, low, high = mean_curve(run["steps"])
-        if not mean:
-            continue
-        x = range(1, len(mean) + 1)
-        n = sum(1 for s in run["steps"] if s)
-        line, = ax.plot(x, mean, marker="o", markersize=3 if len(mean) <= 50 else 0,
-                        label=f"{name} (mean of {n} seeds)" if n > 1 else name)
-        if n > 1:
-            ax.fill_between(x, low, high, color=line.get_color(), alpha=0.2, linewidth=0)
-    if optimal is not None:
-        ax.axhline(optimal, color="gray", linestyle="--", label=f"optimal ({optimal})")
-    ax.set_xlabel("episode")
-    ax.set_ylabel("steps (band: min to max over seeds)")
-    ax.set_yscale("log")
-    if max((len(mean_curve(run["steps"])[0]) for run in runs.values()), default=0) > 50:
-        ax.set_xscale("log")  # hundreds of episodes: the first few, where most is learned, stay visible
-    ax.set_title(title)
-    ax.legend(fontsize="small")
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=100)
-    plt.close(fig)
-    from .atomic import write_bytes
-    write_bytes(output, buf.getvalue())
 
 
 # Feature commands live beside their code (pddl_io/, grounding/, serve/, batch/, minecraft/);

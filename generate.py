@@ -285,11 +285,15 @@ def generate_maze(width: int, depth: int, stones: int = 0, lava: int = 0, loops:
                    f"start S at (1, 1), gold at ({gx}, {gz}), the farthest cell from S"
                    f"{'' if farthest else ' whose path crosses every river once'}.")
     rows = "\n".join("  " + "".join(row) for row in grid)
+    used = {c for row in grid for c in row}
+    # only the characters the map uses: an unused legend character is a warning
+    legend = "\n".join(line for line in LEGEND.splitlines()
+                       if not line.startswith('  "') or line[3] in used)
     return (f"dungeon: {_scalar(name)}\n"
             f"domain: minecraft\n"
             f"description: {_scalar(description)}\n"
             f"height: 4\n"
-            f"{LEGEND}\n"
+            f"{legend}\n"
             f"map: |\n{rows}\n"
             f"agent:\n"
             f"  start: S\n"

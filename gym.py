@@ -226,15 +226,12 @@ class DungeonEnv(gymnasium.Env):
         if not 0 <= a < len(self.action_names):
             raise ValueError(f"action {action!r} is not in {self.action_space}")
         m = self.model
-        nxt = m.apply(a, self.state)
-        applied = nxt is not None
-        why = None if applied else m.why_not(a, self.state)
-        if applied:
-            self.state = nxt
+        why = m.why_not(a, self.state)   # None: the preconditions hold and the action applies
+        applied = why is None
+        self.state, cost, outcome = m.step(self.state, a)
         self.steps += 1
-        reward = float(-m.action_costs[a])
-        success = bool(m.is_goal(self.state))
-        failure = (not success) and bool(m.is_failure(self.state))
+        reward = float(cost)
+        success, failure = outcome == "goal", outcome == "dead"
         if failure:
             reward -= self.death_penalty
         terminated = success or failure

@@ -136,3 +136,36 @@ def mean_curve(steps_per_seed: list) -> tuple[list, list, list]:
     rows = [s for s in steps_per_seed if s]
     cols = [[r[e] for r in rows if e < len(r)] for e in range(max((len(r) for r in rows), default=0))]
     return [sum(c) / len(c) for c in cols], [min(c) for c in cols], [max(c) for c in cols]
+
+
+def plot_curves(runs: dict, optimal, title: str, output: str) -> None:
+    """Draw a PNG to `output`: mean steps per episode of each learner over its seeds,
+    with the min-max band (needs the `plot` extra)."""
+    import io
+    from .extras import pyplot
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for name, run in runs.items():
+        mean, low, high = mean_curve(run["steps"])
+        if not mean:
+            continue
+        x = range(1, len(mean) + 1)
+        n = sum(1 for s in run["steps"] if s)
+        line, = ax.plot(x, mean, marker="o", markersize=3 if len(mean) <= 50 else 0,
+                        label=f"{name} (mean of {n} seeds)" if n > 1 else name)
+        if n > 1:
+            ax.fill_between(x, low, high, color=line.get_color(), alpha=0.2, linewidth=0)
+    if optimal is not None:
+        ax.axhline(optimal, color="gray", linestyle="--", label=f"optimal ({optimal})")
+    ax.set_xlabel("episode")
+    ax.set_ylabel("steps (band: min to max over seeds)")
+    ax.set_yscale("log")
+    if max((len(mean_curve(run["steps"])[0]) for run in runs.values()), default=0) > 50:
+        ax.set_xscale("log")  # hundreds of episodes: the first few, where most is learned, stay visible
+    ax.set_title(title)
+    ax.legend(fontsize="small")
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100)
+    plt.close(fig)
+    from .atomic import write_bytes
+    write_bytes(output, buf.getvalue())

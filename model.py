@@ -85,8 +85,17 @@ class Model:
     def is_terminal(self, state: bytes) -> bool:
         return self.is_goal(state) or self.is_failure(state)
 
-    def reward(self, state: bytes, action: int, next_state: bytes) -> int:
-        return -self.action_costs[action]
+    def step(self, state: bytes, action: int) -> tuple[bytes, int, str | None]:
+        """The world as an RL agent meets it (spec section 3), in the shape of Gymnasium's
+        functional `transition`: (next state, reward, outcome). An action whose
+        preconditions fail is a no-op that still costs its step; the reward is minus the
+        action's cost; the outcome is "goal", "dead" (a failure state) or None. The
+        learning solvers and the Gym env all step through here."""
+        nxt = self.apply_fns[action](state)
+        if nxt is None:
+            nxt = state
+        outcome = "goal" if self.is_goal(nxt) else ("dead" if self.is_failure(nxt) else None)
+        return nxt, -self.action_costs[action], outcome
 
     def agent_position(self, state: bytes) -> tuple:
         return tuple(state[p[0]] + p[1] if p is not None else v for p, v in zip(self.position, self.position_static))

@@ -25,16 +25,18 @@ class Replay:
 
 def read_plan(text: str, path: str) -> list[tuple[str, int, int]]:
     """Action names with their (line, col): one per line (`#` comments and blanks skipped),
-    or JSON: a list of names, or an object with a `plan` list (the output of `bcc solve --json`)."""
+    or JSON: a list of names, an object with a `plan` list (the output of `bcc solve --json`),
+    or one with an `actions` list (a demonstration, as `bcc play --record` writes)."""
     stripped = text.strip()
     if stripped.startswith(("[", "{")):
         try:
             data = json.loads(stripped)
         except json.JSONDecodeError as exc:
             raise BccError(f"invalid JSON plan: {exc.msg}", path, exc.lineno, exc.colno) from None
-        plan = data.get("plan") if isinstance(data, dict) else data
+        plan = (data.get("plan", data.get("actions")) if isinstance(data, dict) else data)
         if not isinstance(plan, list) or not all(isinstance(a, str) for a in plan):
-            raise BccError("a JSON plan is a list of action names, or an object with a \"plan\" list", path, 1, 1)
+            raise BccError("a JSON plan is a list of action names, or an object with a \"plan\" list "
+                           "(bcc solve --json) or an \"actions\" list (bcc play --record)", path, 1, 1)
         return [(a, 1, 1) for a in plan]
     out = []
     for lineno, line in enumerate(text.splitlines(), 1):

@@ -5,7 +5,8 @@ import sys
 
 import click
 
-from ..cli import EXIT_NO_SOLUTION, EXIT_OK, emit_json, goal_option, json_option
+from ..cli_shared import emit_json, goal_option, json_option
+from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
 

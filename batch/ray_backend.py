@@ -11,9 +11,10 @@ import os
 from typing import Callable, Iterable, Iterator
 
 from ..errors import BccError
+from ..extras import install_hint
 from .limits import Limits, Outcome, one_line, run_limited
 
-INSTALL = 'the ray backend needs Ray: pip install "bcc[ray]"'
+INSTALL = f"the ray backend needs Ray: {install_hint('ray')}"
 
 
 def import_ray():

@@ -53,12 +53,8 @@ def table(summary: list[dict]) -> str:
 def plot(rows: list[dict], output: str) -> int:
     """Cost and time of the solved runs against problem size (cells), one series per
     solver setting; returns how many points were drawn."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        raise BccError('plotting needs matplotlib: pip install "bcc[plot]"') from None
+    from ..extras import pyplot
+    plt = pyplot()
     import io
     series: dict[str, list] = {}
     for row in rows:

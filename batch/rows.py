@@ -47,11 +47,8 @@ def solve_run(run: Run) -> dict:
     start = time.perf_counter()
     with open_dungeon(run.dungeon) as path:
         model = compile_dungeon(path, goal=run.goal)
-    options = dict(run.options)
-    if "model" in options:
-        options["learner"] = options.pop("model")
-    if run.seed is not None:
-        options["seed"] = run.seed
+    from ..solvers.options import check_options
+    options = check_options(run.solver, {**dict(run.options), "seed": run.seed})
     result = get_solver(run.solver)(model, run.budget(), **options)
     row = base_row(run)
     row.update(size=model.grid.width * model.grid.depth, solved=result.solved, status=result.status,

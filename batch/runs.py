@@ -13,9 +13,6 @@ from dataclasses import dataclass
 
 from ..errors import BccError
 
-SEEDED = ("rmax", "qlearning")          # solvers whose result depends on a seed
-# option -> (solvers it applies to or None for informed ones, check, what it must be)
-OPTIONS = ("heuristic", "weight", "model", "episodes")
 BUDGETS = ("time_limit", "max_states", "max_memory")
 
 
@@ -51,38 +48,21 @@ class Run:
         return " ".join([self.solver] + [f"{k}={v}" for k, v in self.options])
 
 
-def check_options(solver: str, options: dict) -> None:
-    """The same rules as `bcc solve`: an option a solver does not take is an error."""
-    from ..solvers import list_solvers
-    from ..solvers.heuristics import HEURISTICS
-    from ..compiler.source import suggest
-    solvers = list_solvers()
-    if solver not in solvers:
-        raise BccError(f"unknown solver {solver!r}{suggest(solver, solvers)}; available: {', '.join(solvers)}")
-    for name, value in options.items():
-        if name not in OPTIONS:
-            raise BccError(f"unknown option {name!r}{suggest(name, OPTIONS + BUDGETS)}; "
-                           f"options: {', '.join(OPTIONS)}")
-        if name == "heuristic":
-            if value != "auto" and value not in HEURISTICS:
-                raise BccError(f"unknown heuristic {value!r}; available: auto, {', '.join(HEURISTICS)}")
-            if solver == "bfs" or solver in SEEDED:
-                raise BccError(f"{solver} uses no heuristic")
-        elif name == "weight":
-            if solver not in ("astar", "wastar"):
-                raise BccError("weight applies to astar and wastar only")
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or value < 1:
-                raise BccError(f"weight must be a number >= 1, got {value!r}")
-        elif name == "model":
-            if solver != "rmax":
-                raise BccError("model applies to rmax only")
-            if value not in ("tabular", "oo"):
-                raise BccError(f"model must be tabular or oo, got {value!r}")
-        elif name == "episodes":
-            if solver not in SEEDED:
-                raise BccError("episodes applies to the learning solvers (rmax, qlearning)")
-            if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-                raise BccError(f"episodes must be a whole number >= 1, got {value!r}")
+def seeded(solver: str) -> bool:
+    """Whether the solver's result depends on a seed: it declares a `seed` option."""
+    from ..solvers import get_solver
+    from ..solvers.options import options_of
+    return any(o.name == "seed" for o in options_of(get_solver(solver)))
+
+
+def check_options(solver: str, options: dict) -> dict:
+    """The solver's keyword arguments for a run's options, checked by the solver's own
+    declaration (the one check `bcc solve` and `POST /solve` use). The seed is swept by
+    `seeds`, not given as an option."""
+    from ..solvers.options import check_options as check
+    if "seed" in options:
+        raise BccError("seeds are swept with `seeds:` at the top of a sweep (or --seeds), not per solver")
+    return check(solver, options)
 
 
 def check_limits(limits: dict) -> dict:
@@ -106,7 +86,7 @@ def build_runs(dungeons: list[str], settings: list[tuple[str, dict, dict]], seed
     deterministic: one run each, seed null)."""
     runs, seen = [], set()
     for dungeon, (solver, options, limits) in itertools.product(dungeons, settings):
-        for seed in (seeds if solver in SEEDED else [None]):
+        for seed in (seeds if seeded(solver) else [None]):
             run = Run(dungeon, solver, seed, tuple(sorted(options.items())), tuple(sorted(limits.items())), goal)
             if run.key not in seen:
                 seen.add(run.key)

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import BccError
-from .runs import BUDGETS, OPTIONS, check_limits, check_options
+from .runs import BUDGETS, check_limits, check_options
 
 TOP_KEYS = {"dungeons", "solvers", "seeds", "goal", "budget"}
 
@@ -52,7 +52,7 @@ def expand_setting(solver: str, values: dict) -> list[tuple[str, dict, dict]]:
     out = []
     for combo in itertools.product(*axes):
         chosen = dict(zip(keys, combo))
-        options = {k: v for k, v in chosen.items() if k in OPTIONS}
+        options = {k: v for k, v in chosen.items() if k not in BUDGETS}
         limits = {k: v for k, v in chosen.items() if k in BUDGETS}
         check_options(solver, options)
         out.append((solver, options, check_limits(limits)))
@@ -120,7 +120,8 @@ def _setting(solvers, i, entry) -> list:
             raise error_at(solvers, i, exc.message) from None
     if not isinstance(entry, YMap):
         raise error_at(solvers, i, "a solver is a name or a mapping {solver: NAME, option: value, ...}")
-    check_keys(entry, {"solver", *OPTIONS, *BUDGETS}, {"solver"}, "a solver entry")
+    # any key but `solver` is a budget or an option, checked against the solver's declaration below
+    check_keys(entry, {"solver", *entry}, {"solver"}, "a solver entry")
     if not isinstance(entry["solver"], str):
         raise error_at(entry, "solver", "solver must be a solver name (see `bcc solvers`)")
     try:
@@ -128,6 +129,14 @@ def _setting(solvers, i, entry) -> list:
     except BccError as exc:
         raise error_at(entry, "solver", exc.message) from None
     values = {k: v for k, v in entry.items() if k != "solver"}
+    from ..solvers import get_solver
+    from ..solvers.options import not_taken, options_of
+    declared = [o.name for o in options_of(get_solver(entry["solver"])) if o.name != "seed"]
+    for key in values:
+        if key == "seed":
+            raise error_at(entry, key, "seeds are swept with `seeds:` at the top of a sweep (or --seeds)", on_key=True)
+        if key not in BUDGETS and key not in declared:
+            raise error_at(entry, key, not_taken(entry["solver"], key, declared).message, on_key=True)
     for key, value in values.items():
         if isinstance(value, list) and not value:
             raise error_at(entry, key, f"{key}: an empty list sweeps nothing")

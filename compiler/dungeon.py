@@ -245,7 +245,8 @@ class _Builder:
             raise error_at(agent, "start", "`start` is a map character or [x, y, z]")
         for axis, value, size in zip(acls.position, pos, (dungeon.width, dungeon.height, dungeon.depth)):
             if not 0 <= value < size:
-                raise error_at(agent, "start", f"the start {list(pos)} is outside the dungeon ({dungeon.width}x{dungeon.height}x{dungeon.depth})")
+                raise error_at(agent, "start", f"the start {list(pos)} is outside the dungeon ({dungeon.width} wide "
+                                               f"x {dungeon.depth} deep x {dungeon.height} high)")
             values[axis] = value
             dungeon.where[(dungeon.agent_name, axis)] = (agent, "start")
 

@@ -10,7 +10,8 @@ import sys
 
 import click
 
-from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, json_option
+from ..cli_shared import compile_model, emit_json, json_option, print_result
+from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
 db_option = click.option("--db", "db", type=click.Path(dir_okay=False), default=None,
@@ -58,55 +59,15 @@ def play_cmd(dungeon, record, command_text, as_json):
 @json_option
 def learn_cmd(dungeon, command_text, demo_path, db, as_json):
     """Add a (COMMAND, demonstration) pair in DUNGEON to the dataset, with its inferred task."""
-    from .dataset import Dataset
-    from .demonstration import Demonstration
-    from .learn import explain
-    if not command_text.strip():
-        raise BccError("the command is empty")
-    model = compile_model(dungeon, None)
-    _same_dungeon(dungeon, demo_path)
-    demo = Demonstration.load(demo_path, model)
-    explained = explain(demo, dungeon)
-    if not explained:
-        raise BccError("the demonstration explains no task: its last state must achieve something no earlier "
-                       "state did", demo_path)
-    data = Dataset(db)
-    try:
-        row = data.add_pair(command_text, dungeon, demo.to_json() | {"command": command_text}, explained)
-        total = data.count()
-    finally:
-        data.close()
+    from .learn import add_pair
+    added = add_pair(dungeon, command_text, demo_path, db)
     if as_json:
-        emit_json({"id": row, "command": command_text, "dungeon": dungeon, "task": explained[0]["task"],
-                   "explanations": [{"task": e["task"], "weight": e["weight"]} for e in explained],
-                   "pairs": total, "db": str(data.path)})
+        emit_json(added)
         return
-    click.echo(f"pair {row} added to {data.path} ({total} pair(s)): {command_text!r} -> {explained[0]['task']}")
-    for e in explained[1:]:
+    click.echo(f"pair {added['id']} added to {added['db']} ({added['pairs']} pair(s)): "
+               f"{command_text!r} -> {added['task']}")
+    for e in added["explanations"][1:]:
         click.echo(f"  also explains: {e['task']} (weight {e['weight']:.3g})")
-
-
-def _same_dungeon(dungeon: str, demo_path: str) -> None:
-    """The demonstration must have been recorded in the dungeon it is learned for."""
-    from pathlib import Path
-
-    from ..compiler import resolve_dungeon_path
-    try:
-        recorded = json.loads(Path(demo_path).read_text(encoding="utf-8")).get("dungeon")
-    except (OSError, ValueError, AttributeError):
-        return   # unreadable or not an object: Demonstration.load says what is wrong
-    if not isinstance(recorded, str):
-        return
-
-    def where(ref, base=None):
-        if base is not None and not Path(ref).is_absolute() and (Path(base) / ref).is_file():
-            ref = str(Path(base) / ref)
-        try:
-            return resolve_dungeon_path(ref).resolve()
-        except BccError:
-            return None
-    if where(recorded, Path(demo_path).parent) != where(dungeon):
-        raise BccError(f"the demonstration was recorded in {recorded!r}, not in {dungeon!r}", demo_path)
 
 
 @click.command("train")
@@ -206,24 +167,19 @@ def command_cmd(dungeon, text, db, model_path, time_limit, as_json):
     if as_json:
         emit_json({"dungeon": model.name, **found.to_json(), "model": source})
         sys.exit(EXIT_OK if ok else EXIT_NO_SOLUTION)
+    def say(line):   # the plan alone goes to stdout, as with `bcc solve`
+        click.echo(line, err=True)
     if found.task is None:
-        click.echo(f"not understood: {found.message}" +
-                   (f" (unknown words: {', '.join(found.unknown_words)})" if found.unknown_words else ""))
+        say(f"not understood: {found.message}" +
+            (f" (unknown words: {', '.join(found.unknown_words)})" if found.unknown_words else ""))
         sys.exit(EXIT_NO_SOLUTION)
-    click.echo(f"task: {found.task}")
-    click.echo("candidates:")
+    say(f"task: {found.task}")
+    say("candidates:")
     for t, s in found.candidates:
-        click.echo(f"  {s:8.4f}  {t}")
+        say(f"  {s:8.4f}  {t}")
     if found.unknown_words:
-        click.echo(f"unknown words (ignored): {', '.join(found.unknown_words)}")
-    r = found.result
-    if ok:
-        click.echo(f"plan: {len(r.plan)} step(s), cost {r.cost}")
-        for a in r.plan:
-            click.echo(a)
-    else:
-        click.echo(f"not solved: {found.message}")
-    sys.exit(EXIT_OK if ok else EXIT_NO_SOLUTION)
+        say(f"unknown words (ignored): {', '.join(found.unknown_words)}")
+    sys.exit(print_result(found.result, model.name, model.path, False))
 
 
 @click.group("corpus")
@@ -240,7 +196,7 @@ def corpus_group():
 @json_option
 def corpus_generate_cmd(pairs, seed, workers, as_json):
     """Rebuild grounding/corpus/ (dungeons and pairs.jsonl) with a fixed seed (takes minutes)."""
-    from ..cli import progress_enabled
+    from ..cli_shared import progress_enabled
     from . import corpus
     show = progress_enabled()
     progress = (lambda k, n: click.echo(f"\r  {k}/{n}", err=True, nl=False)) if show else None

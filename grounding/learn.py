@@ -71,3 +71,56 @@ def train(rows, candidates_of=None) -> tuple[LogLinear, float]:
         raise BccError("no pair to train on")
     model = LogLinear.train(examples)
     return model, time.perf_counter() - t0
+
+
+def add_pair(dungeon: str, command_text: str, demo_path, db=None) -> dict:
+    """`bcc learn`: add the pair (command, the demonstration in `demo_path`) to the dataset
+    `db` (None: the default one) with the tasks it explains; returns what was stored.
+    BccError when the command is empty, the demonstration was recorded elsewhere, or it
+    explains no task."""
+    from ..compiler import compile_dungeon
+    from ..errors import BccError
+    from .dataset import Dataset
+    if not command_text.strip():
+        raise BccError("the command is empty")
+    model = compile_dungeon(dungeon)
+    _same_dungeon(dungeon, demo_path)
+    demo = Demonstration.load(demo_path, model)
+    explained = explain(demo, dungeon)
+    if not explained:
+        raise BccError("the demonstration explains no task: its last state must achieve something no earlier "
+                       "state did", demo_path)
+    data = Dataset(db)
+    try:
+        row = data.add_pair(command_text, dungeon, demo.to_json() | {"command": command_text}, explained)
+        total = data.count()
+    finally:
+        data.close()
+    return {"id": row, "command": command_text, "dungeon": dungeon, "task": explained[0]["task"],
+            "explanations": [{"task": e["task"], "weight": e["weight"]} for e in explained],
+            "pairs": total, "db": str(data.path)}
+
+
+def _same_dungeon(dungeon: str, demo_path: str) -> None:
+    """The demonstration must have been recorded in the dungeon it is learned for."""
+    import json
+    from pathlib import Path
+
+    from ..compiler import resolve_dungeon_path
+    from ..errors import BccError
+    try:
+        recorded = json.loads(Path(demo_path).read_text(encoding="utf-8")).get("dungeon")
+    except (OSError, ValueError, AttributeError):
+        return   # unreadable or not an object: Demonstration.load says what is wrong
+    if not isinstance(recorded, str):
+        return
+
+    def where(ref, base=None):
+        if base is not None and not Path(ref).is_absolute() and (Path(base) / ref).is_file():
+            ref = str(Path(base) / ref)
+        try:
+            return resolve_dungeon_path(ref).resolve()
+        except BccError:
+            return None
+    if where(recorded, Path(demo_path).parent) != where(dungeon):
+        raise BccError(f"the demonstration was recorded in {recorded!r}, not in {dungeon!r}", demo_path)

@@ -14,6 +14,7 @@ import os
 import queue
 import shutil
 import subprocess
+import tempfile
 import threading
 from pathlib import Path
 
@@ -79,13 +80,16 @@ class Bridge:
         self._log = open(self._log_path, "ab") if self._log_path else subprocess.DEVNULL
         self._closed = False
         node = node_executable()
+        where = node_dir()
+        # Node finds the packages through NODE_PATH; the working folder only has to exist
+        # (the data folder does only after `bcc minecraft setup`).
+        cwd = where if where.is_dir() else Path(tempfile.gettempdir())
         try:
-            where = node_dir()
             env = dict(os.environ, NODE_PATH=str(where / "node_modules"))
-            self.proc = subprocess.Popen([node, str(SCRIPT)], cwd=str(where), env=env, stdin=subprocess.PIPE,
+            self.proc = subprocess.Popen([node, str(SCRIPT)], cwd=str(cwd), env=env, stdin=subprocess.PIPE,
                                          stdout=subprocess.PIPE, stderr=self._log, bufsize=0)
         except OSError as exc:
-            raise MinecraftError(f"cannot run {node}: {exc.strerror or exc}") from None
+            raise MinecraftError(f"cannot run {node} {SCRIPT} in {cwd}: {exc.strerror or exc}") from None
         self._hello = threading.Event()     # set on the bridge's hello, or when it exits first
         self._started = False
         self._reader = threading.Thread(target=self._read, name="minecraft-bridge-reader", daemon=True)

@@ -12,7 +12,8 @@ from pathlib import Path
 
 import click
 
-from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, goal_option, json_option
+from ..cli_shared import compile_model, emit_json, goal_option, json_option
+from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
 db_option = click.option("--db", type=click.Path(dir_okay=False), default=None,

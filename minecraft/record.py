@@ -221,29 +221,19 @@ def wait_for_player(bridge: Bridge, player: str | None, timeout: float) -> str:
 
 def store(demo, path, db: str | None = None) -> dict:
     """Save the demonstration, then add the (command, demonstration) pair to the grounding
-    dataset with `bcc learn` (its public command: the dataset's own checks and transaction
-    apply); where that command is not installed, say how to add the pair later."""
-    import json
+    dataset as `bcc learn` does (the same function: the dataset's own checks and
+    transaction apply); a pair it refuses is saved only, and the message says why."""
     import shlex
-    import subprocess
-    import sys
+    from ..grounding.learn import add_pair
     demo.save(path)
     argv = ["learn", demo.dungeon, demo.command, "--demo", str(path)] + (["--db", str(db)] if db else [])
     shown = "bcc " + " ".join(shlex.quote(a) for a in argv)
-    from ..cli import main
-    if "learn" not in main.commands:
-        return {"stored": False, "message": f"store it in the grounding dataset with: {shown}"}
-    proc = subprocess.run([sys.executable, "-m", "bcc", *argv, "--json"], capture_output=True, text=True,
-                          timeout=300)
-    if proc.returncode != 0:
-        why = (proc.stderr or proc.stdout).strip().splitlines()[-1:] or ["no output"]
-        return {"stored": False, "message": f"not stored in the grounding dataset: `{shown}` says: {why[0]}"}
     try:
-        info = json.loads(proc.stdout)
-    except ValueError:
-        info = {}
-    return {"stored": True, "task": info.get("task"), "db": info.get("db"),
-            "message": f"stored in the grounding dataset {info.get('db', '')} as {info.get('task')!r} ({shown})"}
+        info = add_pair(demo.dungeon, demo.command, str(path), db)
+    except BccError as exc:
+        return {"stored": False, "message": f"not stored in the grounding dataset: `{shown}` says: {exc}"}
+    return {"stored": True, "task": info["task"], "db": info["db"],
+            "message": f"stored in the grounding dataset {info['db']} as {info['task']!r} ({shown})"}
 
 
 def host(model: Model, bridge: Bridge, out_dir, log: Callable[[str], None] = print,

@@ -17,6 +17,7 @@ from typing import Callable
 from ..errors import BccError
 from ..model import Model
 from ..solvers import Budget, get_solver
+from ..solvers.options import check_options, options_of
 from .actions import changed_cells, geometry
 from .bridge import BOT, Bridge
 from .world import WorldMap, check_supported, describe, difference
@@ -65,8 +66,11 @@ class RunResult:
 
 def solve_from(model: Model, state: bytes, solver: str, budget: Budget, replanning: bool):
     """A plan from `state` (the compiled model with its start moved there)."""
-    options = {"heuristic": "manhattan"} if replanning and solver in ("astar", "wastar", "idastar", "gbfs") else {}
-    return get_solver(solver)(dataclasses.replace(model, initial=state), budget, **options)
+    solve = get_solver(solver)
+    # replanning must be quick: the cheap heuristic, for the solvers that take one
+    informed = any(o.name == "heuristic" for o in options_of(solve))
+    options = check_options(solver, {"heuristic": "manhattan"}) if replanning and informed else {}
+    return solve(dataclasses.replace(model, initial=state), budget, **options)
 
 
 def prepare(bridge: Bridge, world: WorldMap, port: int, player: str = BOT) -> None:

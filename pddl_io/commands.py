@@ -6,8 +6,8 @@ import sys
 
 import click
 
-from ..errors import BccError
-from ..cli import EXIT_NO_SOLUTION, EXIT_OK, compile_model, emit_json, goal_option, json_option, progress_enabled
+from ..cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, print_result,
+                          progress_enabled, solver_flags, solver_request)
 
 
 @click.group("export")
@@ -55,17 +55,16 @@ def import_group():
 @click.argument("domain", type=click.Path(dir_okay=False))
 @click.argument("problem", type=click.Path(dir_okay=False))
 @click.option("--solver", default="astar", show_default=True, help="A bcc solver (see `bcc solvers`), or fd.")
-@click.option("--heuristic", default=None, help="Informed solvers: the heuristic (see `bcc solve --help`).")
 @click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS",
               help="Stop after this many seconds (reading, grounding and search together).")
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop the search after storing this many states.")
 @click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB",
               help="Stop when the process uses this much memory [default: half the RAM].")
-@click.option("--fd-search", metavar="CONFIG", default=None, help="fd: Fast Downward search [default: astar(lmcut())].")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write the plan to FILE, one action a line (atomically).")
 @json_option
-def import_pddl_cmd(domain, problem, solver, heuristic, time_limit, max_states, max_memory, fd_search, output, as_json):
+@solver_flags
+def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory, output, as_json, **solver_options):
     """Compile a PDDL DOMAIN + PROBLEM with bcc's own front-end and solve it.
 
     The plan is printed in PDDL form, one `(action arg ...)` a line; its cost is the sum
@@ -76,47 +75,31 @@ def import_pddl_cmd(domain, problem, solver, heuristic, time_limit, max_states, 
     default = Budget.default()
     budget = Budget(max_states=max_states, time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
+    solve = get_solver(solver)
+    options = solver_request(solver, solver_options)   # the options bcc solve takes, checked the same way
     deadline = Deadline(budget)
     model = None
     try:
         with hard_limits(budget):
             from .importer import import_pddl
             model = import_pddl(domain, problem)
-            solve = get_solver(solver)
             if output:
                 from ..atomic import check_writable
                 check_writable(output)
-            options = {}
-            if heuristic is not None:
-                options["heuristic"] = heuristic
-            if fd_search is not None:
-                if solver != "fd":
-                    raise BccError("--fd-search applies to the fd solver only")
-                options["search"] = fd_search
             progress = progress_enabled()
             result = solve(model, deadline.remaining(), progress=progress, **options)
-            if progress:
-                click.echo("\r" + " " * 60 + "\r", err=True, nl=False)
+            clear_progress(progress)
     except BudgetExceeded as exc:
         result = exceeded_result(solver, exc.which, deadline.elapsed())
     if output and result.solved:
         write_text(output, "".join(a + "\n" for a in result.plan))
     report = model.report if model is not None else {}
-    if as_json:
-        emit_json({"problem": model.name if model else problem, "atoms": report.get("atoms"),
-                   "grounded_actions": report.get("grounded_actions"), "action_costs": report.get("action_costs"),
-                   **result.to_json()})
-    elif result.solved:
-        click.echo(f"solved {model.name} with {result.solver}: cost {result.cost}, {len(result.plan)} steps, "
-                   f"{result.expanded:,} expanded, {report['grounded_actions']} grounded actions, "
-                   f"{report['atoms']} atoms")
-        for a in result.plan:
-            click.echo(a)
-    else:
-        click.echo(f"not solved: {result.message}")
-    if not result.solved:
-        click.echo(f"{problem}: {result.message}", err=True)
-    sys.exit(EXIT_OK if result.solved else EXIT_NO_SOLUTION)
+    name = model.name if model is not None else problem
+    sys.exit(print_result(result, name, problem, as_json,
+                          {"problem": name, "atoms": report.get("atoms"),
+                           "grounded_actions": report.get("grounded_actions"),
+                           "action_costs": report.get("action_costs")},
+                          details=f"; {report.get('grounded_actions')} grounded actions, {report.get('atoms')} atoms"))
 
 
 COMMANDS = [export_group, import_group]

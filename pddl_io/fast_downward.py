@@ -19,13 +19,15 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import BccError
+from ..extras import install_hint
+from ..solvers.options import Option, declare
 
 DEFAULT_SEARCH = "astar(lmcut())"
 # The driver's exit codes for "ran out of time or memory": translate (20, 21), search
 # (22-24), and a component killed by the CPU-time limit (SIGXCPU; the driver exits with
 # its negative return code, 256 - 24 = 232).
 OUT_OF_BUDGET = (20, 21, 22, 23, 24, 256 - 24)
-INSTALL_HINT = 'Fast Downward is not installed: pip install "bcc[pddl]" (the PyPI package up-fast-downward)'
+INSTALL_HINT = f"Fast Downward is not installed: {install_hint('pddl')} (the PyPI package up-fast-downward)"
 
 
 def driver() -> Path:
@@ -97,13 +99,14 @@ def _solve_files(model, budget, files, search, start):
     if fd.status == "error":
         raise BccError(fd.message)
     if not fd.solved:
-        return Result("fd", False, fd.status, seconds=seconds, message=fd.message,
+        return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
                       budget="time_limit" if fd.status == "budget" else None)
     costs = dict(zip(model.action_names, model.action_costs))
     known = all(a in costs for a in fd.plan)
     cost = sum(costs[a] for a in fd.plan) if known else fd.cost
-    return Result("fd", True, "solved", plan=fd.plan, cost=cost, seconds=seconds,
-                  message=f"Fast Downward on the PDDL files, search {search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")
+    return Result(solver="fd", solved=True, status="solved", plan=fd.plan, cost=cost, seconds=seconds,
+                  message="Fast Downward on the PDDL files, search "
+                          f"{search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")
 
 
 def _read_plan(path: str, full_names: bool = False):
@@ -118,6 +121,12 @@ def _read_plan(path: str, full_names: bool = False):
     return ops, cost
 
 
+def _unavailable() -> str | None:
+    return None if available() else INSTALL_HINT
+
+
+@declare(Option("fd_search", str, DEFAULT_SEARCH, "the Fast Downward search configuration", keyword="search"),
+         optimal=True, unavailable=_unavailable)
 def solve(model, budget, progress=None, search: str | None = None, **_):
     """Fast Downward on the exact PDDL export (--fd-search CONFIG, default astar(lmcut()))
 
@@ -142,9 +151,9 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
     if fd.status == "error":
         raise BccError(fd.message)
     if not fd.solved:
-        return Result("fd", False, fd.status, seconds=seconds, message=fd.message,
+        return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
                       budget="time_limit" if fd.status == "budget" else None)
     plan = [a for a in (task.action_of(op) for op in fd.plan) if a is not None]
     cost = sum(model.action_costs[model.action_index(a)] for a in plan)
-    return Result("fd", True, "solved", plan=plan, cost=cost, seconds=seconds,
+    return Result(solver="fd", solved=True, status="solved", plan=plan, cost=cost, seconds=seconds,
                   message=f"Fast Downward, search {search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")

@@ -53,7 +53,8 @@ def validate(domain_file: str, problem_file: str, plan_file: str) -> tuple[bool,
     try:
         import unified_planning.shortcuts as ups
     except ImportError:
-        raise BccError('validating PDDL plans needs unified-planning: pip install "bcc[pddl]"') from None
+        from ..extras import missing
+        raise missing("validating PDDL plans", "unified-planning", "pddl") from None
     ups.get_environment().credits_stream = None
     try:
         from pyval import PDDLValidator

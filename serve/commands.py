@@ -6,8 +6,7 @@ import sys
 
 import click
 
-from ..cli import emit_json, json_option
-from ..errors import BccError
+from ..cli_shared import emit_json, json_option
 
 
 @click.command("serve")
@@ -35,7 +34,8 @@ def serve_cmd(host, port, workers, max_body_kb, job_memory_mb, max_time_limit, a
         import uvicorn
         from .app import Settings, create_app
     except ImportError as exc:
-        raise BccError(f'bcc serve needs {exc.name}: pip install "bcc[serve]"') from None
+        from ..extras import missing
+        raise missing("bcc serve", exc.name, "serve") from None
     settings = Settings(workers=workers or os.cpu_count() or 1, max_body_bytes=max_body_kb * 1000,
                         job_memory_mb=job_memory_mb, max_time_limit=max_time_limit)
     from .listen import bind, url

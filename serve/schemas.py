@@ -40,15 +40,21 @@ class SolveRequest(DungeonRequest):
     max_states: int | None = Field(None, ge=1, description="Stop after storing this many states.")
     max_memory_mb: float | None = Field(None, ge=1, description="Memory the job may add to its process "
                                                                 "[default and cap: the server's --job-memory].")
-    heuristic: str | None = Field(None, description="Informed solvers: auto, pdb, manhattan or blind.")
-    weight: float | None = Field(None, ge=1, description="astar/wastar: f = g + W h.")
-    episodes: int | None = Field(None, ge=1, description="Learning solvers: number of episodes.")
+    # The solver options: each is checked against the chosen solver's declaration (the one
+    # check of bcc solve and batch too; GET /solvers lists them with their ranges), so an
+    # option the solver does not take or a value out of range is a 400 naming it.
+    heuristic: str | None = Field(None, description="Informed solvers: the heuristic (GET /solvers lists them).")
+    weight: float | None = Field(None, description="astar/wastar: f = g + W h, W >= 1.")
+    preferred: bool | None = Field(None, description="gbfs with hff: also expand by its preferred actions.")
+    episodes: int | None = Field(None, description="Learning solvers: number of episodes.")
     seed: int | None = Field(None, description="Learning solvers: random seed.")
-    model: Literal["tabular", "oo"] | None = Field(None, description="rmax: the model learner [default: tabular].")
-    gamma: float | None = Field(None, gt=0, lt=1, description="Learning solvers: discount [default: 0.99].")
-    delta: float | None = Field(None, gt=0, description="rmax: value iteration stops below this change [default: 0.01].")
-    known_after: int | None = Field(None, ge=1, description="rmax: visits before a (state, action) is known [default: 1].")
-    max_steps: int | None = Field(None, ge=1, description="Learning solvers: steps before an episode is cut.")
+    model: str | None = Field(None, description="rmax: the model learner, tabular or oo [default: tabular].")
+    gamma: float | None = Field(None, description="Learning solvers: discount [default: 0.99].")
+    alpha: float | None = Field(None, description="qlearning: learning rate [default: 0.5].")
+    epsilon: float | None = Field(None, description="qlearning: exploration rate [default: 0.1].")
+    delta: float | None = Field(None, description="rmax: value iteration stops below this change [default: 0.01].")
+    known_after: int | None = Field(None, description="rmax: visits before a (state, action) is known [default: 1].")
+    max_steps: int | None = Field(None, description="Learning solvers: steps before an episode is cut.")
 
 
 MAX_ACTIONS = 20_000  # a frame is ~1 KB of JSON: bounds one answer to tens of MB

@@ -1,5 +1,7 @@
 """Solvers: one module per algorithm, all `solve(model, budget, progress=None, **options)`.
 
+Each solver declares its options beside its `solve` (`options.declare`), and
+`options.check_options` checks a request against that declaration for every caller.
 Built-ins are listed here as "module:function" strings and imported only when used;
 installed packages add solvers through the `bcc.solvers` entry-point group. A plugin
 that fails to load is reported by name and never breaks the built-ins.
@@ -11,37 +13,22 @@ from importlib.metadata import entry_points
 
 from ..errors import BccError
 from .base import Budget, Result
+from .options import check_options, options_of, unavailable
 
 BUILTIN = {
     "bfs": ("bcc.solvers.bfs:solve", "breadth-first search (optimal for unit costs)"),
-    "astar": ("bcc.solvers.astar:solve", "A* (optimal; --heuristic auto|pdb|manhattan|blind, --weight W > 1 for weighted)"),
-    "wastar": ("bcc.solvers.astar:solve_weighted", "weighted A*, f = g + w h (--weight, default 2; cost <= w x optimal)"),
+    "astar": ("bcc.solvers.astar:solve", "A* (optimal with weight 1; weight W > 1: cost <= W x optimal)"),
+    "wastar": ("bcc.solvers.astar:solve_weighted", "weighted A*, f = g + W h (cost <= W x optimal)"),
     "gbfs": ("bcc.solvers.gbfs:solve", "greedy best-first search (fast, not optimal)"),
     "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
-    "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning (--model tabular|oo, --episodes, --seed, --gamma, --delta, --known-after, --max-steps)"),
-    "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline (--episodes, --seed, --gamma, --max-steps)"),
+    "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning: learns the dynamics from episodes"),
+    "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline"),
 }
 
-__all__ = ["Budget", "Result", "get_solver", "list_solvers", "optimal_cost", "LEARNING"]
+__all__ = ["Budget", "Result", "check_options", "describe_solvers", "get_solver", "list_solvers", "optimal_cost",
+           "LEARNING"]
 
 LEARNING = ("rmax", "qlearning")   # learn from episodes; report `converged_episode` against A*
-
-
-def learning_options(solver: str, given: dict, spelled: dict) -> dict:
-    """The learning solvers' options among `given` (option -> value, None when not given),
-    checked for `solver`; a BccError names an option that does not apply as the user
-    spelled it (`spelled`: a flag, a JSON field)."""
-    out = {}
-    for key in ("learner", "delta", "m"):
-        if given.get(key) is not None:
-            if solver != "rmax":
-                raise BccError(f"{spelled[key]} applies to rmax only")
-            out[key] = given[key]
-    rest = [key for key in ("episodes", "seed", "gamma", "max_steps") if given.get(key) is not None]
-    if rest and solver not in LEARNING:
-        raise BccError(f"{', '.join(spelled[key] for key in rest)}: for the learning solvers (rmax, qlearning) only")
-    out.update((key, given[key]) for key in rest)
-    return out
 
 
 def optimal_cost(model, budget: Budget | None = None) -> int | None:
@@ -68,19 +55,22 @@ def list_solvers() -> dict[str, str]:
     return out
 
 
-def describe_solvers() -> dict[str, str]:
-    """`list_solvers`, with each plugin described by the first line of its docstring
-    (loading it; a plugin that fails to load says so)."""
-    out = list_solvers()
-    for name, ep in _plugins().items():
-        if name in BUILTIN:
-            continue
+def describe_solvers() -> dict[str, dict]:
+    """Every solver: {description, options (from its declaration), unavailable (why it
+    cannot run here, or None)}. Plugins are loaded to read their docstring's first line and
+    their options; a plugin that fails to load says so and is marked unavailable."""
+    out = {}
+    for name, doc in list_solvers().items():
         try:
-            doc = (ep.load().__doc__ or "").strip().splitlines()
-        except Exception as exc:  # noqa: BLE001 - described, not raised: `bcc solvers` lists the rest
-            out[name] = f"plugin from {ep.value} (fails to load: {exc})"
+            solve = get_solver(name)
+        except BccError as exc:   # a plugin that fails to load: described, not raised
+            out[name] = {"description": doc + " (fails to load)", "options": [], "unavailable": exc.message}
             continue
-        out[name] = f"{doc[0].rstrip('.')} (plugin: {ep.value})" if doc else f"plugin from {ep.value}"
+        if name not in BUILTIN:
+            lines = (solve.__doc__ or "").strip().splitlines()
+            doc = f"{lines[0].rstrip('.')} (plugin: {_plugins()[name].value})" if lines else doc
+        out[name] = {"description": doc, "options": [o.to_json() for o in options_of(solve)],
+                     "unavailable": unavailable(solve)}
     return out
 
 
@@ -95,6 +85,7 @@ def get_solver(name: str):
         except Exception as exc:  # noqa: BLE001
             raise BccError(f"the solver plugin {name!r} ({plugins[name].value}) failed to load: {exc}") from None
     import difflib
-    close = difflib.get_close_matches(name, list(list_solvers()), n=1)
+    names = list_solvers()
+    close = difflib.get_close_matches(name, list(names), n=1)
     hint = f" (did you mean {close[0]!r}?)" if close else ""
-    raise BccError(f"unknown solver {name!r}{hint}; available: {', '.join(list_solvers())}")
+    raise BccError(f"unknown solver {name!r}{hint}; available: {', '.join(names)}")

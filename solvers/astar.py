@@ -20,10 +20,16 @@ import math
 from ..model import Model
 from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
 from .heuristics import HEURISTICS
+from .options import Option, declare, heuristic_option
 
 SWITCH_AFTER = 4096
 
 
+def weight_option(default: float) -> Option:
+    return Option("weight", float, default, "f = g + W h; W > 1 is faster, cost <= W x optimal", low=1)
+
+
+@declare(heuristic_option("auto"), weight_option(1.0), optimal=True)
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", weight: float = 1.0,
           name: str = "astar", **options) -> Result:
     meter = Meter(budget, progress)
@@ -41,7 +47,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
 
     def result(**kw) -> Result:
-        return meter.finish(Result(name, heuristic=used, initial_h=h0, stored=len(parents), **kw))
+        return meter.finish(Result(solver=name, heuristic=used, initial_h=h0, stored=len(parents), **kw))
 
     if h0 == math.inf:
         return result(solved=False, status="no_solution",
@@ -107,6 +113,7 @@ def _resort(open_heap, closed, g_of, h, weight) -> list:
     return fresh
 
 
+@declare(heuristic_option("auto"), weight_option(2.0))
 def solve_weighted(model: Model, budget: Budget, progress=None, weight: float = 2.0, **options) -> Result:
     """Weighted A* (default w = 2): usually much faster, cost at most w x optimal."""
     return solve(model, budget, progress, weight=weight, name="wastar", **options)

@@ -119,7 +119,8 @@ BUDGET_WORDS = {
 
 
 def budget_result(solver: str, which: str, meter: Meter, expanded: int, generated: int, stored: int) -> Result:
-    return meter.finish(Result(solver, False, "budget", expanded=expanded, generated=generated, stored=stored,
+    return meter.finish(Result(solver=solver, solved=False, status="budget", expanded=expanded,
+                               generated=generated, stored=stored,
                                budget=which, message=f"stopped: {BUDGET_WORDS[which]} ran out"))
 
 

@@ -12,14 +12,17 @@ from collections import deque
 
 from ..model import Model
 from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
+from .options import declare
 
 
+@declare(optimal=True)   # no options; optimal for unit costs
 def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     meter = Meter(budget, progress)
     start = model.initial
     parents = {start: None}
     if model.is_goal(start):
-        return meter.finish(Result("bfs", True, "solved", [], 0, 0, 1, 1))
+        return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=[], cost=0, expanded=0,
+                                   generated=1, stored=1))
     successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
     frontier = deque([start])
     expanded = generated = 0
@@ -39,9 +42,11 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
                 plan, cost = extract_plan(model, parents, nxt)
                 note = "" if len(set(model.action_costs)) <= 1 else \
                     "fewest steps; actions' costs differ, so a cheaper plan may exist (astar finds it)"
-                return meter.finish(Result("bfs", True, "solved", plan, cost, expanded, generated, len(parents),
+                return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=plan, cost=cost,
+                                           expanded=expanded, generated=generated, stored=len(parents),
                                            message=note))
             if not is_failure(nxt):
                 frontier.append(nxt)
-    return meter.finish(Result("bfs", False, "no_solution", expanded=expanded, generated=generated,
+    return meter.finish(Result(solver="bfs", solved=False, status="no_solution", expanded=expanded,
+                               generated=generated,
                                stored=len(parents), message="no plan exists: every reachable state was explored"))

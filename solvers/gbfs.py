@@ -14,6 +14,7 @@ import math
 from ..model import Model
 from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
 from .heuristics import HEURISTICS
+from .options import Option, declare, heuristic_option
 
 BOOST = 1000
 
@@ -26,6 +27,9 @@ def preferred_of(h):
     return None
 
 
+@declare(heuristic_option("pdb"),
+         Option("preferred", bool, True, "with hff: also expand states reached by its preferred actions "
+                "(a second queue, boosted on progress)"))
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", preferred: bool = True,
           **options) -> Result:
     meter = Meter(budget, progress)
@@ -35,7 +39,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
     parents = {start: None}
     h0 = h(start)
     if h0 == math.inf:
-        return meter.finish(Result("gbfs", False, "no_solution", stored=1, heuristic=heuristic, initial_h=h0,
+        return meter.finish(Result(solver="gbfs", solved=False, status="no_solution", stored=1,
+                                   heuristic=heuristic, initial_h=h0,
                                    message="no plan exists: the goal cannot hold at any reachable position"))
     pref_of = {start: helpful()} if helpful else None
     queues = [[(h0, 0, start)], []]   # all states; states reached by a preferred action
@@ -55,7 +60,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
         closed.add(state)
         if model.is_goal(state):
             plan, cost = extract_plan(model, parents, state)
-            return meter.finish(Result("gbfs", True, "solved", plan, cost, expanded, generated, len(parents),
+            return meter.finish(Result(solver="gbfs", solved=True, status="solved", plan=plan, cost=cost,
+                                       expanded=expanded, generated=generated, stored=len(parents),
                                        heuristic=heuristic, initial_h=h0))
         expanded += 1
         if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
@@ -79,6 +85,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
                     heapq.heappush(queues[1], (hn, tie, nxt))
             if hn < best:
                 best, boost = hn, BOOST
-    return meter.finish(Result("gbfs", False, "no_solution", expanded=expanded, generated=generated,
+    return meter.finish(Result(solver="gbfs", solved=False, status="no_solution", expanded=expanded,
+                               generated=generated,
                                stored=len(parents), heuristic=heuristic, initial_h=h0,
                                message="no plan exists: every reachable state was explored"))

@@ -11,6 +11,7 @@ import math
 from ..model import Model
 from .base import CHECK_EVERY, Budget, Meter, Result
 from .heuristics import HEURISTICS
+from .options import declare, heuristic_option
 
 
 class _Stop(Exception):
@@ -18,6 +19,7 @@ class _Stop(Exception):
         self.which = which
 
 
+@declare(heuristic_option("pdb"), optimal=True)
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", **options) -> Result:
     meter = Meter(budget, progress)
     h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
@@ -69,16 +71,18 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
             t = dfs(start, 0, bound)
             if t is True:
                 plan = [model.action_names[a] for a in path_actions]
-                return meter.finish(Result("idastar", True, "solved", plan, sum(costs[a] for a in path_actions),
-                                           counters["expanded"], counters["generated"], counters["depth"],
+                return meter.finish(Result(solver="idastar", solved=True, status="solved", plan=plan,
+                                           cost=sum(costs[a] for a in path_actions),
+                                           expanded=counters["expanded"], generated=counters["generated"],
+                                           stored=counters["depth"],
                                            heuristic=heuristic, initial_h=h0))
             bound = t
     except _Stop as stop:
         from .base import BUDGET_WORDS
-        return meter.finish(Result("idastar", False, "budget", expanded=counters["expanded"],
+        return meter.finish(Result(solver="idastar", solved=False, status="budget", expanded=counters["expanded"],
                                    generated=counters["generated"], stored=counters["depth"], budget=stop.which,
                                    heuristic=heuristic, initial_h=h0,
                                    message=f"stopped: {BUDGET_WORDS[stop.which]} ran out"))
-    return meter.finish(Result("idastar", False, "no_solution", expanded=counters["expanded"],
+    return meter.finish(Result(solver="idastar", solved=False, status="no_solution", expanded=counters["expanded"],
                                generated=counters["generated"], stored=counters["depth"], heuristic=heuristic,
                                initial_h=h0, message="no plan exists: no path within any bound"))

@@ -35,20 +35,9 @@ import random
 from ..errors import BccError
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result
+from .options import Option, declare
 
 CHECK_STEPS = 1024   # environment steps between budget checks
-
-
-def _step(model: Model, s: bytes, a: int):
-    """The world: (next state, reward, kind) with kind in {None, "goal", "dead"}."""
-    n = model.apply(a, s)
-    n = s if n is None else n
-    r = -model.action_costs[a]
-    if model.is_goal(n):
-        return n, r, "goal"
-    if model.is_failure(n):
-        return n, r, "dead"
-    return n, r, None
 
 
 def greedy_rollout(model: Model, q: dict, max_steps: int, q_init: float = 0.0) -> tuple[list[int], bool]:
@@ -61,7 +50,7 @@ def greedy_rollout(model: Model, q: dict, max_steps: int, q_init: float = 0.0) -
         return [], True
     for _ in range(max_steps):
         a = max(range(n_actions), key=lambda i: (q.get((s, i), q_init), -i))
-        s, _, kind = _step(model, s, a)
+        s, _, kind = model.step(s, a)
         plan.append(a)
         if kind is not None:
             return plan, kind == "goal"
@@ -71,6 +60,14 @@ def greedy_rollout(model: Model, q: dict, max_steps: int, q_init: float = 0.0) -
     return plan, False
 
 
+@declare(
+    Option("episodes", int, 200, "episodes to learn for", low=1),
+    Option("seed", int, 0, "random seed"),
+    Option("gamma", float, 0.99, "discount", low=0, high=1),
+    Option("alpha", float, 0.5, "learning rate", low=0, high=1, low_open=True),
+    Option("epsilon", float, 0.1, "exploration rate (epsilon-greedy)", low=0, high=1),
+    Option("max_steps", int, 200, "steps before an episode is cut", low=1),
+)
 def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed: int = 0, alpha: float = 0.5,
           gamma: float = 0.99, epsilon: float = 0.1, max_steps: int = 200, q_init: float = 0.0,
           optimal_cost: int | None = None, **options) -> Result:
@@ -105,7 +102,7 @@ def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed
                 vs = values(s)
                 best = max(vs)
                 a = rng.choice([i for i, v in enumerate(vs) if v >= best - 1e-12])
-            n, r, kind = _step(model, s, a)
+            n, r, kind = model.step(s, a)
             if kind == "goal":
                 target = r
             elif kind == "dead":
@@ -146,7 +143,7 @@ def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed
             converged = i + 1
     message = "" if ok else (f"after {episodes} episode(s) the greedy policy does not reach the goal; Q-learning is "
                              f"not complete, so a plan may still exist (try more --episodes)")
-    result = Result("qlearning", ok, "solved" if ok else "no_solution",
+    result = Result(solver="qlearning", solved=ok, status="solved" if ok else "no_solution",
                     plan=[model.action_names[a] for a in plan] if ok else [], cost=cost,
                     expanded=steps_total, generated=steps_total, stored=len(seen), message=message,
                     heuristic=f"alpha={alpha} gamma={gamma} epsilon={epsilon} episodes={episodes}")

@@ -30,14 +30,9 @@ import numpy as np
 from ..model import Model
 from .base import Budget, Meter, Result
 from .model_learners import LEARNERS
+from .options import Option, declare
 
 MAX_IMAGINED = 20_000
-
-
-def _world(model: Model, s: bytes, a: int) -> bytes:
-    """The world: RL semantics of spec section 3 (an inapplicable action is a no-op)."""
-    n = model.apply(a, s)
-    return s if n is None else n
 
 
 class Kinds(dict):
@@ -180,6 +175,16 @@ def _steps_left(distance, longest_move: int):
     return lambda s: -(-distance(s) // longest_move)
 
 
+@declare(
+    Option("model", str, "tabular", "the model learner", choices=lambda: tuple(LEARNERS), keyword="learner"),
+    Option("episodes", int, 10, "episodes to learn for", low=1),
+    Option("seed", int, 0, "random seed"),
+    Option("gamma", float, 0.99, "discount", low=0, high=1, low_open=True, high_open=True),
+    Option("delta", float, 0.01, "value iteration stops when no value changes more", low=0, low_open=True),
+    Option("known_after", int, 1, "visits before a (state, action) is known (1: the world is deterministic)",
+           low=1, keyword="m"),
+    Option("max_steps", int, 1000, "steps before an episode is cut", low=1),
+)
 def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular", episodes: int = 10,
           seed: int = 0, gamma: float = 0.99, delta: float = 0.01, m: int = 1, max_steps: int = 1000,
           optimal_cost: int | None = None, all_actions: bool = False, **options) -> Result:
@@ -214,11 +219,11 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             best = max(values)
             k = rng.choice([k for k, v in enumerate(values) if v >= best - 1e-9])
             a, planned = actions[k], q.next(s, k)
-            n = _world(model, s, a)
+            n, reward, outcome = model.step(s, a)
             know.observe(s, a, n)
             longest[0] = max(longest[0], sum(abs(u - v) for u, v in zip(where(s), where(n))))
             plan.append(a)
-            ret -= 1
+            ret += reward
             steps_total += 1
             if steps_total % 256 == 0 or replanned:  # planning can be slow: check after it too
                 replanned = False
@@ -228,8 +233,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
                     r = budget_result("rmax", which, meter, steps_total, steps_total, 0)
                     r.episodes = history
                     return r
-            s = n
-            kind = "goal" if model.is_goal(s) else ("dead" if model.is_failure(s) else None)
+            s, kind = n, outcome
             if kind is not None:
                 break
             if planned != n or not q.covers(s):  # a surprise, or beyond what was planned: plan again
@@ -247,7 +251,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
                 converged = i
                 break
     solved = bool(history) and history[-1]["success"]
-    result = Result("rmax", solved, "solved" if solved else "no_solution",
+    result = Result(solver="rmax", solved=solved, status="solved" if solved else "no_solution",
                     plan=[model.action_names[a] for a in last_plan], cost=len(last_plan) if solved else None,
                     expanded=steps_total, generated=steps_total,
                     message="" if solved else "the last episode did not reach the goal")

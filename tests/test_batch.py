@@ -110,10 +110,14 @@ def test_sweep_file_expands_to_its_product(tmp_path):
 
 
 @pytest.mark.parametrize("bad, token, message", [
-    ("  - {solver: astar, heuristic: [manhattan, pbd]}", "pbd", "unknown heuristic 'pbd'"),
-    ("  - {solver: bfs, weight: 2}", "2}", "weight applies to astar and wastar only"),
+    ("  - {solver: astar, heuristic: [manhattan, pbd]}", "pbd",
+     "`heuristic` must be one of auto, pdb, manhattan, blind, got 'pbd' (did you mean 'pdb'?)"),
+    ("  - {solver: bfs, weight: 2}", "weight", "`weight` does not apply to bfs (its options: none)"),
+    ("  - {solver: rmax, heuristic: pdb}", "heuristic", "`heuristic` does not apply to rmax"),
+    ("  - {solver: qlearning, gamma: 1.5}", "1.5", "`gamma` must be a number >= 0 and <= 1, got 1.5"),
+    ("  - {solver: qlearning, seed: 1}", "seed", "seeds are swept with `seeds:`"),
     ("  - {solver: astr}", "astr", "did you mean 'astar'"),
-    ("  - {solver: astar, heurstic: pdb}", "heurstic", "unknown key 'heurstic'"),
+    ("  - {solver: astar, heurstic: pdb}", "heurstic", "`heurstic` does not apply to astar (did you mean 'heuristic'?)"),
 ])
 def test_sweep_errors_point_into_the_file(tmp_path, bad, token, message):
     path = tmp_path / "sweep.yaml"
@@ -316,7 +320,7 @@ def test_ray_backend_without_ray_says_how_to_install_it(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "bcc", "batch", "bridge", "--backend", "ray", "--out",
                            str(tmp_path / "r.jsonl")], capture_output=True, text=True, env=env, timeout=60)
     assert proc.returncode == 2
-    assert proc.stderr.strip() == 'the ray backend needs Ray: pip install "bcc[ray]"'
+    assert proc.stderr.strip() == 'the ray backend needs Ray: pip install ".[ray]" in the bcc checkout'
 
 
 def test_usage_errors_exit_2(tmp_path):

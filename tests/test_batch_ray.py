@@ -13,7 +13,7 @@ from click.testing import CliRunner
 from bcc.batch import Limits, build_runs, expand_dungeons, map_runs, run_batch
 from bcc.cli import main
 
-ray = pytest.importorskip("ray", reason='the ray backend needs Ray: pip install "bcc[ray]"')
+ray = pytest.importorskip("ray", reason='the ray backend needs Ray: pip install ".[ray]" in the bcc checkout')
 
 SAME = ("key", "dungeon", "size", "solver", "seed", "options", "solved", "status", "budget", "cost",
         "plan_length", "expanded", "generated", "stored", "error")

@@ -39,7 +39,7 @@ GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
 PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md",
          "learning-curves.md"]
-NEEDS: dict = {}  # pages whose commands need an optional extra: page -> the module it brings
+NEEDS = {"learning-curves.md": "matplotlib"}  # pages whose commands need an optional extra: page -> the module it brings
 
 FENCE = re.compile(r"^```([^\n`]*)\n(.*?)^```[ \t]*$", re.M | re.S)
 FILE_MARK = re.compile(r"<!--\s*(file|append):\s*(\S+)\s*-->\s*\Z")
@@ -251,16 +251,19 @@ def test_tutorial_pages_have_steps():
         assert any(s.kind == "file" for s in steps) or page not in PAGES[:3], page
 
 
+@pytest.mark.slow   # the pages run in one module fixture, about 30 s together
 def test_first_dungeon_page_works_word_for_word(followed):
     problems = followed["first-dungeon.md"].result()
     assert not problems, problems[0]
 
 
+@pytest.mark.slow   # the pages run in one module fixture, about 30 s together
 def test_object_class_page_works_word_for_word(followed):
     problems = followed["object-class.md"].result()
     assert not problems, problems[0]
 
 
+@pytest.mark.slow   # the pages run in one module fixture, about 30 s together
 def test_add_a_solver_page_works_word_for_word(followed):
     if "add-a-solver.md" not in followed:
         pytest.skip(can_build_plugins())
@@ -268,6 +271,7 @@ def test_add_a_solver_page_works_word_for_word(followed):
     assert not problems, problems[0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("page", ["grounding.md", "batch.md", "pddl.md", "learning-curves.md"])
 def test_feature_pages_work_word_for_word(followed, page):
     if page not in followed:

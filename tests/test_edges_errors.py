@@ -184,9 +184,9 @@ def test_fast_downward_exit_codes_map_to_statuses(monkeypatch, tmp_path, code, s
 
 @pytest.mark.parametrize("module, args, extra", [
     ("up_fast_downward", ["import", "pddl", str(PDDL / "gripper-domain.pddl"), str(PDDL / "gripper-3.pddl"),
-                          "--solver", "fd"], "bcc[pddl]"),   # importing itself needs no extra
-    ("uvicorn", ["serve", "--port", "0"], "bcc[serve]"),
-    ("matplotlib", ["batch", "report", "{results}", "--plot", "{tmp}/p.png"], "bcc[plot]"),
+                          "--solver", "fd"], ".[pddl]"),   # importing itself needs no extra
+    ("uvicorn", ["serve", "--port", "0"], ".[serve]"),
+    ("matplotlib", ["batch", "report", "{results}", "--plot", "{tmp}/p.png"], ".[plot]"),
 ])
 def test_a_missing_extra_is_one_line_naming_it(monkeypatch, tmp_path, module, args, extra):
     results = tmp_path / "r.jsonl"

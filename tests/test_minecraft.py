@@ -199,8 +199,11 @@ def fake_node(tmp_path, body: str) -> str:
 
 
 @pytest.fixture
-def no_install_check(monkeypatch):
+def no_install_check(monkeypatch, tmp_path):
+    """No packages needed, and their data folder missing, as on a machine that never ran
+    `bcc minecraft setup` (the bridge once failed there with a misleading 'cannot run node')."""
     monkeypatch.setattr(bridge_mod, "check_installed", lambda: None)
+    monkeypatch.setattr(bridge_mod, "node_dir", lambda: tmp_path / "never-set-up")
 
 
 def test_missing_node_is_a_clear_error(monkeypatch):

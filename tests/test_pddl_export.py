@@ -60,12 +60,14 @@ def check_walks(m, task, walks=4, steps=60, seed=0):
     return checked
 
 
-@pytest.mark.parametrize("dungeon", ["grid", "bridge", "easy_maze", "four_rooms", "barnyard", "tough_maze"])
+@pytest.mark.parametrize("dungeon", ["grid", "bridge", "easy_maze", "four_rooms", "barnyard",
+                                     pytest.param("tough_maze", marks=pytest.mark.slow)])
 def test_export_matches_model_on_random_walks(dungeon):
     m, task = compiled(dungeon)
     assert check_walks(m, task) > 20
 
 
+@pytest.mark.slow
 def test_tough_maze_walks_that_mine_and_place():
     # Uniform walks rarely reach a stone, so these start from every state along bcc's
     # optimal plan (which mines three stones) and branch off it, preferring to destroy
@@ -111,6 +113,7 @@ def test_fixpoint_domains_cover_every_reachable_state():
         assert all(v in task.domains.values[i] for i, v in enumerate(s))
 
 
+@pytest.mark.slow
 def test_tough_maze_counts_stay_within_the_stones_that_exist():
     # A plain relaxed fixpoint would let every inventory count reach 64; the histogram
     # abstraction bounds them by the stones of the grid (counted here from the grid).

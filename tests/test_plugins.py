@@ -77,10 +77,11 @@ def test_solvers_lists_plugins_besides_builtins(plugin_env):
     solvers = json.loads(proc.stdout)["solvers"]
     assert BUILTINS <= set(solvers)
     assert {"dfs", "broken"} <= set(solvers)
-    assert "bcc_plugin_demo:solve" in solvers["dfs"]
+    assert "bcc_plugin_demo:solve" in solvers["dfs"]["description"]
     # described by the first line of the plugin's docstring; a plugin that cannot load says so
-    assert solvers["dfs"].startswith(SOLVE_DOC)
-    assert "fails to load" in solvers["broken"]
+    assert solvers["dfs"]["description"].startswith(SOLVE_DOC)
+    assert solvers["dfs"]["unavailable"] is None and solvers["dfs"]["options"] == []
+    assert "fails to load" in solvers["broken"]["description"] and solvers["broken"]["unavailable"]
 
 
 def test_dfs_plugin_solves_and_its_plan_validates(plugin_env):

@@ -31,6 +31,7 @@ def test_rmax_converges_on_grid_to_the_optimal_plan(learner):
     assert [e["steps"] for e in result.episodes][-1] == cost
 
 
+@pytest.mark.slow
 def test_rmax_oo_converges_on_bridge_to_the_optimal_plan():
     # Mine the stone, bridge the lava, walk to the gold: 13 steps, A*'s cost (hand-checked in
     # test_solvers.py). One death in lava teaches the oo model lava everywhere.
@@ -42,6 +43,7 @@ def test_rmax_oo_converges_on_bridge_to_the_optimal_plan():
     assert result.converged_episode is not None and result.converged_episode <= 3
 
 
+@pytest.mark.slow
 def test_tabular_rmax_converges_on_bridge_after_many_deaths():
     # Tabular knows nothing across states: every lava-side state (facing, look, item held)
     # is its own unknown, and each death ends an episode -- hundreds of episodes, not 4.
@@ -123,6 +125,7 @@ def test_the_shortest_imagined_path_to_the_goal_is_optimal_in_that_model():
     assert h(b"") == 3 and rmax._steps_left(lambda s: 5, 0)(b"") == 0
 
 
+@pytest.mark.slow
 def test_rmax_oo_converges_on_the_tough_maze_where_the_imagined_graph_is_too_big():
     # 43 steps and six stones to mine: more states within the goal's distance than value
     # iteration may hold (MAX_IMAGINED); R-max then follows the shortest imagined path.
@@ -178,12 +181,14 @@ def test_cli_tunes_rmax_and_rejects_what_does_not_apply():
     assert sum(e["steps"] for e in twice["episodes"]) > sum(e["steps"] for e in once["episodes"])
     cut = json.loads(solve("--solver", "rmax", "--episodes", "2", "--max-steps", "3", "--json").stdout)
     assert [e["steps"] for e in cut["episodes"]] == [3, 3]
-    for bad, says in [(["--solver", "rmax", "--gamma", "1"], "0 < gamma < 1"),
-                      (["--solver", "rmax", "--delta", "0"], "delta > 0"),
-                      (["--solver", "rmax", "--known-after", "0"], "m >= 1"),
-                      (["--solver", "qlearning", "--delta", "0.1"], "--delta applies to rmax only"),
-                      (["--solver", "astar", "--gamma", "0.9"], "--gamma: for the learning solvers"),
-                      (["--solver", "qlearning", "--max-steps", "0"], "max_steps >= 1")]:
+    for bad, says in [(["--solver", "rmax", "--gamma", "1"], "--gamma must be a number > 0 and < 1, got '1'"),
+                      (["--solver", "rmax", "--delta", "0"], "--delta must be a number > 0"),
+                      (["--solver", "rmax", "--known-after", "0"], "--known-after must be a whole number >= 1"),
+                      (["--solver", "qlearning", "--delta", "0.1"], "--delta does not apply to qlearning"),
+                      (["--solver", "astar", "--gamma", "0.9"], "--gamma does not apply to astar"),
+                      (["--solver", "qlearning", "--max-steps", "0"], "--max-steps must be a whole number >= 1"),
+                      (["--solver", "rmax", "--heuristic", "pdb"], "--heuristic does not apply to rmax"),
+                      (["--solver", "rmax", "-O", "known_after=x"], "-O known_after must be a whole number")]:
         result = solve(*bad)
         assert result.exit_code == 2 and says in result.output and "Traceback" not in result.output, bad
 

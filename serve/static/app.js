@@ -358,7 +358,11 @@ async function loadShipped(name) {
 async function start() {
   const [{ dungeons }, { solvers }] = await Promise.all([api("GET", "/dungeons"), api("GET", "/solvers")]);
   $("dungeon-select").replaceChildren(...dungeons.map((d) => new Option(`${d.name} — ${d.goal ?? "inherits its goal"}`, d.name)));
-  $("solver").replaceChildren(...Object.keys(solvers).map((s) => new Option(`${s} — ${solvers[s]}`, s)));
+  $("solver").replaceChildren(...Object.keys(solvers).map((s) => {
+    const info = solvers[s], option = new Option(`${s} — ${info.description}`, s);
+    if (info.unavailable) { option.disabled = true; option.text += ` (unavailable: ${info.unavailable})`; }
+    return option;
+  }));
   if ("astar" in solvers) $("solver").value = "astar";
   const wanted = new URLSearchParams(location.search).get("dungeon");
   const first = dungeons.some((d) => d.name === wanted) ? wanted : (dungeons.some((d) => d.name === "bridge") ? "bridge" : dungeons[0].name);

@@ -19,7 +19,8 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     start = model.initial
     parents = {start: None}  # state -> (previous state, action index); doubles as the visited set
     if model.is_goal(start):
-        return meter.finish(Result(NAME, True, "solved", [], 0, 0, 1, 1))
+        return meter.finish(Result(solver=NAME, solved=True, status="solved", plan=[], cost=0, expanded=0,
+                                   generated=1, stored=1))
     successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
     stack = [start]
     expanded = generated = 0
@@ -38,9 +39,11 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
             parents[nxt] = (state, action)
             if is_goal(nxt):
                 plan, cost = extract_plan(model, parents, nxt)
-                return meter.finish(Result(NAME, True, "solved", plan, cost, expanded, generated, len(parents)))
+                return meter.finish(Result(solver=NAME, solved=True, status="solved", plan=plan, cost=cost,
+                                           expanded=expanded, generated=generated, stored=len(parents)))
             if not is_failure(nxt):  # states in which the episode failed are never expanded
                 children.append(nxt)
         stack.extend(reversed(children))  # the first successor is explored first
-    return meter.finish(Result(NAME, False, "no_solution", expanded=expanded, generated=generated,
+    return meter.finish(Result(solver=NAME, solved=False, status="no_solution", expanded=expanded,
+                               generated=generated,
                                stored=len(parents), message="no plan exists: every reachable state was explored"))
