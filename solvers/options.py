@@ -152,6 +152,14 @@ def check_options(solver: str, given: dict, spell: Callable[[str], str] = lambda
     return out
 
 
+def check_arguments(solve, arguments: dict) -> None:
+    """For a solver's own use, when called from Python without `check_options`: each
+    declared option among its keyword `arguments` is checked against the declaration."""
+    for option in options_of(solve):
+        if option.argument in arguments:
+            option.check(arguments[option.argument], f"{option.name} ({solve.__module__})")
+
+
 def not_taken(solver: str, name: str, declared, spell=lambda name: f"`{name}`") -> BccError:
     takes = ", ".join(spell(n) for n in declared) or "none"
     return BccError(f"{spell(name)} does not apply to {solver}{near(name, declared)} (its options: {takes})")

@@ -32,10 +32,9 @@ from __future__ import annotations
 
 import random
 
-from ..errors import BccError
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result
-from .options import Option, declare
+from .options import Option, check_arguments, declare
 
 CHECK_STEPS = 1024   # environment steps between budget checks
 
@@ -71,11 +70,8 @@ def greedy_rollout(model: Model, q: dict, max_steps: int, q_init: float = 0.0) -
 def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed: int = 0, alpha: float = 0.5,
           gamma: float = 0.99, epsilon: float = 0.1, max_steps: int = 200, q_init: float = 0.0,
           optimal_cost: int | None = None, **options) -> Result:
-    if episodes < 0 or max_steps < 1:
-        raise BccError(f"qlearning needs episodes >= 0 and max_steps >= 1 (got {episodes}, {max_steps})")
-    if not (0 < alpha <= 1 and 0 <= gamma <= 1 and 0 <= epsilon <= 1):
-        raise BccError(f"qlearning needs 0 < alpha <= 1, 0 <= gamma <= 1, 0 <= epsilon <= 1 "
-                       f"(got alpha={alpha}, gamma={gamma}, epsilon={epsilon})")
+    check_arguments(solve, {"episodes": episodes, "seed": seed, "alpha": alpha, "gamma": gamma, "epsilon": epsilon,
+                            "max_steps": max_steps})
     meter = Meter(budget, progress)
     rng = random.Random(seed)
     n_actions = len(model.action_names)

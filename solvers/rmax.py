@@ -30,7 +30,7 @@ import numpy as np
 from ..model import Model
 from .base import Budget, Meter, Result
 from .model_learners import LEARNERS
-from .options import Option, declare
+from .options import Option, check_arguments, declare
 
 MAX_IMAGINED = 20_000
 
@@ -188,12 +188,8 @@ def _steps_left(distance, longest_move: int):
 def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular", episodes: int = 10,
           seed: int = 0, gamma: float = 0.99, delta: float = 0.01, m: int = 1, max_steps: int = 1000,
           optimal_cost: int | None = None, all_actions: bool = False, **options) -> Result:
-    from ..errors import BccError
-    if learner not in LEARNERS:
-        raise BccError(f"unknown model learner {learner!r}; available: {', '.join(LEARNERS)}")
-    if not (0 < gamma < 1 and delta > 0 and m >= 1 and max_steps >= 1 and episodes >= 0):
-        raise BccError(f"rmax needs 0 < gamma < 1, delta > 0, m >= 1, max_steps >= 1 and episodes >= 0 "
-                       f"(got gamma {gamma}, delta {delta}, m {m}, max_steps {max_steps}, episodes {episodes})")
+    check_arguments(solve, {"learner": learner, "episodes": episodes, "seed": seed, "gamma": gamma, "delta": delta,
+                            "m": m, "max_steps": max_steps})
     meter = Meter(budget, progress)
     rng = random.Random(seed)
     know = LEARNERS[learner](model, m)
