@@ -78,6 +78,11 @@ SOLVER_FLAGS = ("heuristic", "weight", "preferred", "model", "episodes", "seed",
                 "delta", "known_after", "max_steps", "fd_search")
 
 
+def flag(name: str) -> str:
+    """A solver option's command-line spelling: `known_after` -> `--known-after`."""
+    return "--" + name.replace("_", "-")
+
+
 class SolverFlag(click.Option):
     """A solver option's flag; its help is read from the solvers' declarations only when
     --help is shown (loading every solver costs start-up time)."""
@@ -111,7 +116,6 @@ def _flag_help(name: str) -> str:
 def solver_flags(command):
     """The SOLVER_FLAGS and `-O NAME=VALUE` (any declared option, e.g. a plugin's) on a
     command; it receives them as `opt_NAME` and `extra_options`. See `solver_request`."""
-    from .solvers.options import flag
     for name in reversed(SOLVER_FLAGS):
         command = click.option(flag(name), "opt_" + name, cls=SolverFlag, default=None,
                                metavar=name.upper().replace("_", "-") if name != "fd_search" else "CONFIG")(command)
@@ -123,7 +127,7 @@ def solver_request(solver: str, kwargs: dict) -> dict:
     """The checked keyword options for `solver` from a command's `opt_*` and
     `extra_options` parameters (popped from `kwargs`)."""
     from .errors import BccError
-    from .solvers.options import check_options, flag
+    from .solvers.options import check_options
     given = {name[4:]: kwargs.pop(name) for name in list(kwargs) if name.startswith("opt_")}
     spelled = {name: flag(name) for name in given}
     for item in kwargs.pop("extra_options", ()):

@@ -163,8 +163,3 @@ def check_arguments(solve, arguments: dict) -> None:
 def not_taken(solver: str, name: str, declared, spell=lambda name: f"`{name}`") -> BccError:
     takes = ", ".join(spell(n) for n in declared) or "none"
     return BccError(f"{spell(name)} does not apply to {solver}{near(name, declared)} (its options: {takes})")
-
-
-def flag(name: str) -> str:
-    """An option's command-line spelling: `known_after` -> `--known-after`."""
-    return "--" + name.replace("_", "-")

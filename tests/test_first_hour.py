@@ -91,3 +91,14 @@ def test_sizes_are_worded_one_way(tmp_path):
     assert refused.stderr.strip() == "out.yaml:4:10: the start [20, 1, 1] is outside the dungeon (7 wide x 7 deep x 4 high)"
     compiled = bcc("compile", "bridge", cwd=tmp_path)
     assert compiled.stdout.splitlines()[0].endswith(": 7 wide x 7 deep x 4 high")
+
+
+def test_one_unknown_solver_message_everywhere(tmp_path):
+    """bcc solve, bcc batch and bcc import pddl name an unknown solver the same way."""
+    want = "unknown solver 'astr' (did you mean 'astar'?); available: bfs, astar,"
+    solve = bcc("solve", "bridge", "--solver", "astr", cwd=tmp_path)
+    batch = bcc("batch", "bridge", "--solver", "astr", "--out", "r.jsonl", cwd=tmp_path)
+    for proc in (solve, batch):
+        assert proc.returncode == 2 and proc.stderr.startswith(want), proc.stderr
+    rmax = bcc("solve", "bridge", "--solver", "rmax", "--heuristic", "pdb", cwd=tmp_path)
+    assert rmax.returncode == 2 and rmax.stderr.startswith("--heuristic does not apply to rmax (its options: --model")
