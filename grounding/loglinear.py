@@ -9,15 +9,15 @@ generative model spends its probability on them. This model is discriminative:
 C(command) are the command's features: a bias, its words and word pairs (spelling
 normalised against the training vocabulary, text.py), and its words tagged by where they
 stand (second half, last few words), so "bring the chair to blue then go to green" and
-its mirror image differ. F(task) are the task's features: its text, its lifted form
-(`agentInRoom blockInRoom`), each atom, each function and each function with one
-argument (`blockInRoom:blue`). The bias crossed with the task features is the prior over
+its mirror image differ, and words said two, or three and more, times. F(task) are the
+task's features: its text, its lifted form (`agentInRoom blockInRoom`), each atom, each
+function and each function with one argument (`blockInRoom:blue`). The bias crossed with the task features is the prior over
 tasks; a word crossed with `blockInRoom:blue` is what IBM Model 2 calls t(word | token).
 Because task features are atoms and their parts, a model trained in one dungeon scores
 the tasks of another.
 
-Training maximises the conditional log-likelihood with an L2 penalty by L-BFGS-free
-full-batch gradient steps (Adam), numpy only. A pair whose task is latent (inferred from a
+Training maximises the conditional log-likelihood with an L2 penalty by full-batch
+gradient steps (Adam), numpy only. A pair whose task is latent (inferred from a
 demonstration: several weighted explanations) contributes log sum_{t in explanations}
 weight(t) P(t | command) -- EM's objective, differentiated directly.
 """
@@ -67,6 +67,9 @@ def command_features(tokens: list[str]) -> list[str]:
         out.append(("h2:" if 2 * j >= m else "h1:") + w)
         if j >= m - TAIL:
             out.append("e:" + w)
+    # a word said again and again ("go to the door ... the door ... the door"): how many
+    # rooms a route crosses, and so whether the agent comes back
+    out += [f"c{min(n, 3)}:{w}" for w, n in Counter(tokens).items() if n >= 2]
     return list(dict.fromkeys(out))
 
 
