@@ -164,3 +164,17 @@ def test_generate_takes_a_number_of_workers():
     assert r.exit_code == 0 and "--workers" in r.output and "the output is the same" in " ".join(r.output.split())
     r = CliRunner().invoke(main, ["corpus", "generate", "--workers", "0"])
     assert r.exit_code == 2 and "--workers" in r.output
+
+
+def test_shipped_model_is_the_corpus_model_and_gold_means_gold():
+    # The model shipped beside the pairs was trained on this very file (its digest), and
+    # "get to the gold" in bridge means the gold block, not the stone (the seed's IBM
+    # Model 2 chose agentOnBlock(agent, burlap_stone)).
+    import json as _json
+    from bcc.grounding.interpret import rank
+    from bcc.grounding.learn import space_for
+    data = _json.loads(corpus.MODEL.read_text())
+    assert data["corpus"] == f"{corpus.digest()}:train"
+    model = corpus.corpus_model()
+    space = space_for("bridge")
+    assert rank(model, space, space.model.initial, "get to the gold").task == "agentOnBlock(agent, gold)"
