@@ -8,7 +8,7 @@ comment and brace characters, triple quotes, NUL, lone surrogates, terminal esca
 characters), never exit 3, and the code in the strings must never run: it would create a
 canary file. The posted-text path of `bcc serve` gets the same strings (400, never 5xx).
 
-The full sweep (about 6,000 compiles) is marked slow; the quick loop runs a seeded sample.
+The sweep over every field is marked slow; the quick loop runs a seeded sample.
 """
 from __future__ import annotations
 
@@ -93,11 +93,18 @@ def cases():
     return out
 
 
-def all_mutations(canary: Path):
+def all_mutations(canary: Path, every_string: bool = True):
+    """Every field with every hostile string; or (every_string=False) every field with the
+    line-break-and-code string plus one other, taken in turn, so each string still
+    reaches hundreds of fields at a fifth of the cost."""
+    strings = hostile_strings(canary)
+    k = 0
     for label, dungeon, doc, kind in cases():
         for where in string_paths(doc):
-            for i, text in enumerate(hostile_strings(canary)):
-                yield label, dungeon, doc, kind, where, i, text
+            chosen = range(len(strings)) if every_string else (0, 1 + k % (len(strings) - 1))
+            k += 1
+            for i in chosen:
+                yield label, dungeon, doc, kind, where, i, strings[i]
 
 
 def write_case(tmp: Path, dungeon: str, doc, kind: str, where, text) -> Path:
@@ -128,11 +135,11 @@ def check_outcome(result, what: str) -> None:
     assert not RAW_CONTROL.search(result.stdout), f"{what}: raw control characters printed: {result.stdout[:300]!r}"
 
 
-def run_mutations(tmp_path: Path, sample: int | None) -> int:
+def run_mutations(tmp_path: Path, sample: int | None, every_string: bool = True) -> int:
     canary = tmp_path / "canary"
     work = tmp_path / "work"
     work.mkdir()
-    mutations = list(all_mutations(canary))
+    mutations = list(all_mutations(canary, every_string))
     if sample is not None:
         mutations = random.Random(21).sample(mutations, sample)
     runner = CliRunner()
@@ -150,7 +157,9 @@ def test_hostile_strings_in_a_sample_of_fields(tmp_path):
 
 @pytest.mark.slow
 def test_hostile_strings_in_every_field_of_every_shipped_file(tmp_path):
-    assert run_mutations(tmp_path, sample=None) > 4000
+    # ~1,300 compiles (every field, two strings each); all 11 strings on every field is
+    # about 7,000 and runs in bench/fuzz.py's league, not in the test suite.
+    assert run_mutations(tmp_path, sample=None, every_string=False) > 1000
 
 
 # ---- the reported attack, through the real executable -----------------------------------
