@@ -58,7 +58,7 @@ def read_manifest(path: Path) -> list[dict]:
             sys.exit(f"{path}:{n}: expected REPOSITORY DOMAIN PROBLEM")
         repo, dom, prob = parts
         out.append({"repo": repo, "domain_path": dom, "problem_path": prob,
-                    "name": f"{Path(dom).parent.name}/{Path(prob).stem}"})
+                    "name": "/".join(filter(None, (Path(dom).parent.name, Path(prob).stem)))})
     return out
 
 

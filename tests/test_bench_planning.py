@@ -1,0 +1,40 @@
+"""bench/planning.py on the hand-written problems of tests/pddl (a manifest of its own):
+it runs every configuration, checks costs across the optimal ones and writes its JSON."""
+import importlib.util
+import json
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def load_bench():
+    spec = importlib.util.spec_from_file_location("planning_bench", ROOT / "bench" / "planning.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.slow
+def test_the_planning_benchmark_reports_coverage_and_checks_costs(tmp_path):
+    bench = load_bench()
+    from bcc.pddl_io.fast_downward import available
+    manifest = tmp_path / "manifest.txt"
+    manifest.write_text("# local problems\n"
+                        "local/pddl road-domain.pddl road-1.pddl\n"
+                        "local/pddl sokoban-domain.pddl sokoban-corridor.pddl\n"
+                        "local/pddl gripper-domain.pddl missing.pddl\n")
+    configs = ["bcc-astar", "bcc-blind"] + (["fd-blind"] if available() else [])
+    out = tmp_path / "r.json"
+    bench.main(["--ipc", str(ROOT / "tests"), "--manifest", str(manifest), "--configs", ",".join(configs),
+                "--time-limit", "60", "--no-validate", "--no-dungeons", "--out", str(out),
+                "--plot", str(tmp_path / "p.png")])
+    report = json.loads(out.read_text())
+    summary = report["ipc"]["summary"]
+    assert summary["problems"] == 2                   # the missing file is skipped
+    assert summary["coverage"]["bcc-astar"] == 2 and summary["wrong_costs"] == []
+    costs = {p["name"]: p["runs"]["bcc-astar"]["cost"] for p in report["ipc"]["problems"]}
+    assert costs == {"road-1": 2, "sokoban-corridor": 2}
+    if available():
+        assert all(p["cost_check"] == "ok" for p in report["ipc"]["problems"])
