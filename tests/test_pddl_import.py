@@ -184,3 +184,12 @@ def test_the_fd_solver_runs_on_an_imported_model():
     assert r.returncode == 0, r.stderr
     out = json.loads(r.stdout)
     assert out["solver"] == "fd" and out["plan"] == ["(drive a b)", "(drive b c)"] and out["cost"] == 2
+
+
+def test_gbfs_on_an_imported_problem_uses_the_relaxed_plan():
+    # It used the grid's pattern database, h = 0 on a model without a grid.
+    r = CliRunner().invoke(main, ["import", "pddl", str(HERE / "gripper-domain.pddl"), str(HERE / "gripper-3.pddl"),
+                                  "--solver", "gbfs", "--json"])
+    assert r.exit_code == 0, r.output
+    out = json.loads(r.output)
+    assert out["heuristic"] == "hff" and out["solved"] and out["cost"] >= 9
