@@ -252,6 +252,8 @@ def main(argv=None):
             for p in part.get("ipc", {}).get("problems", []):
                 by_name.setdefault(p["name"], {**p, "runs": {}})["runs"].update(p["runs"])
         problems = list(by_name.values())
+        if problems:   # the configurations that ran on IPC problems (a dungeons-only run lists its own)
+            configs = [c for c in configs if any(c in p["runs"] for p in problems)]
         dungeons = [d for part in parts for d in part.get("dungeons", [])]
         args.time_limit = parts[0]["time_limit"]
     elif not args.dungeons_only:
