@@ -75,10 +75,10 @@ def test_folds_levels_and_both_modes(tmp_path):
 
 def test_bad_pairs_are_bad_input(tmp_path):
     bad = tmp_path / "bad.jsonl"
-    bad.write_text('{"command": "go to the red room", "task": "agentInRoom(agent, red)"}\n{"command": 1}\n')
+    bad.write_text('{"command": "walk over to the red room now", "task": "agentInRoom(agent, red)"}\n{"command": 1}\n')
     r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
     assert r.exit_code == 2 and "bad.jsonl:2:1:" in r.stderr
-    bad.write_text('{"command": "go to the red room", "task": "agentInRoom(agent, purple)"}\n')
+    bad.write_text('{"command": "walk over to the red room now", "task": "agentInRoom(agent, purple)"}\n')
     r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
     assert r.exit_code == 2 and "bad.jsonl:1:1:" in r.stderr and "not a task" in r.stderr
     bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)"\n')
