@@ -77,7 +77,7 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
                     max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
     solve = get_solver(solver)
     options = solver_request(solver, solver_options)   # the options bcc solve takes, checked the same way
-    if options.get("heuristic") is None and solver in ("gbfs", "wastar"):
+    if options.get("heuristic") in (None, "auto") and solver in ("gbfs", "wastar"):
         options["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
     deadline = Deadline(budget)
     model = None
