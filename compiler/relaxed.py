@@ -225,6 +225,7 @@ class Builder:
         self.or_facts: dict = {}     # frozenset of minterms -> aux fact
         self.fired: dict = {}        # (action, residual effects) -> aux fact
         self.cond_cache: dict = {}   # residual condition -> its decision-tree leaves
+        self.written_cache: dict = {}  # residual top-level effect -> atoms it may write
 
     # ---- facts -------------------------------------------------------------------------
     def _group_domain(self, members) -> list:
@@ -391,27 +392,34 @@ class Builder:
         # Too many cases: each written atom gets its own component, fired apart and
         # shared by every context whose component reads the same after folding.
         try:
-            atoms = self.ev.written_atoms(effects, set())
+            written = [self._written(top) for top in effects]
         except Drop as exc:
             raise RelaxedTooBig(str(exc)) from None
         adds = []
-        for atom in sorted(atoms):
-            comp = _component(effects, atom, self.ev)
-            try:
-                leaves = self.ev.branch(lambda e: self.ev.simulate(comp, e, pins2), {}, 1)
-                if len(leaves) == 1 and not leaves[0][0] and leaves[0][1] is not None:
-                    adds.extend(self.fact(at, v) for at, v in leaves[0][1].items())
-                    continue
-            except (TooBig, Drop, Fail):
-                pass
-            key = (index, atom, comp)
+        for atom in sorted(set().union(*written)):
+            tops = tuple(top for top, w in zip(effects, written) if atom in w)
+            key = (index, atom, tops)
             f = self.fired.get(key)
             if f is None:
+                comp = _component(tops, atom, self.ev)
+                try:
+                    leaves = self.ev.branch(lambda e: self.ev.simulate(comp, e, pins2), {}, 1)
+                    if len(leaves) == 1 and not leaves[0][0] and leaves[0][1] is not None:
+                        adds.extend(self.fact(at, v) for at, v in leaves[0][1].items())
+                        continue
+                except (TooBig, Drop, Fail):
+                    pass
                 f = self.new_fact(f"fired:{a.name}#{len(self.fired)}")
                 self.fired[key] = f
                 self.fire_effects(comp, f, atom)
             adds.append(f)
         self.op(pre_facts, adds, a.cost, index)
+
+    def _written(self, top) -> frozenset:
+        w = self.written_cache.get(top)
+        if w is None:
+            w = self.written_cache[top] = frozenset(self.ev.written_atoms((top,), set()))
+        return w
 
     def fire_effects(self, effects, fired: int, atom) -> None:
         """Zero-cost operators, one per old value of the written atom: `fired` and
