@@ -63,13 +63,13 @@ def main():
 @main.command("compile")
 @click.argument("dungeon")
 @json_option
-@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the compiled model as JSON (format bcc-model/1, the report included) to FILE, atomically.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the compiled model as JSON (format bcc-model/2, the report included) to FILE, atomically.")
 @click.option("--emit-python", type=click.Path(dir_okay=False, writable=True), help="Write the generated successor code to FILE.")
 @goal_option
 def compile_cmd(dungeon, as_json, output, emit_python, goal):
     """Parse, type-check and compile DUNGEON (a file or a shipped name); report the model."""
     model = compile_model(dungeon, goal)
-    report = dict(model.report, action_names=list(model.action_names))
+    report = model.compile_report()
     if output:
         from .model_json import model_json
         write_output(output, json.dumps(model_json(model), indent=2) + "\n")
@@ -92,7 +92,11 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal):
     click.echo("action schemas: " + ", ".join(f"{a}({', '.join(p)})" for a, p in r["action_schemas"].items()))
     click.echo(f"grounded actions: {r['grounded_actions']}")
     click.echo(f"state variables: {r['state_variables']} (+ {r['mutable_cells']} mutable cells in layers "
-               f"{r['mutable_layers']}; {r['state_bytes']} bytes per state)")
+               f"{r['mutable_layers']})")
+    b = r["state_bytes"]
+    click.echo(f"bytes per state: {b['start']} at the start + {b['per_changed_cell']} per changed cell; "
+               f"typical {b['typical']}, largest {b['largest']} over the first {b['sampled']:,} states; "
+               f"worst {b['worst']:,} (every mutable cell changed)")
     click.echo(f"goal: {r['goal']}")
 
 

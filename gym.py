@@ -175,12 +175,7 @@ class DungeonEnv(gymnasium.Env):
     def world(self, state: bytes | None = None) -> np.ndarray:
         """Every cell's block type index, shape (height, depth, width), indexed [y, z, x]."""
         state = self.state if state is None else state
-        g = self.model.grid
-        w = self._static.copy()
-        for k, y in enumerate(g.layers):
-            start = g.base + k * self._area
-            w[y] = np.frombuffer(state, dtype=np.uint8, count=self._area, offset=start).reshape(g.depth, g.width)
-        return w
+        return self.model.view(state).grid()
 
     def action_mask(self, state: bytes | None = None) -> np.ndarray:
         """1 for each action whose precondition holds in `state`, else 0 (dtype int8)."""
@@ -213,8 +208,10 @@ class DungeonEnv(gymnasium.Env):
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         super().reset(seed=seed)
         start = (options or {}).get("state", self.model.initial)
-        if not isinstance(start, (bytes, bytearray)) or len(start) != len(self.model.initial):
-            raise ValueError(f"options['state'] must be a model state: bytes of length {len(self.model.initial)}")
+        base = self.model.grid.base
+        if not isinstance(start, (bytes, bytearray)) or len(start) < base or (len(start) - base) % 4:
+            raise ValueError("options['state'] must be a model state: bytes, the variables then 4 per changed cell "
+                             f"({base} + 4k long)")
         self.state = bytes(start)
         self.steps = 0
         info = self._info()

@@ -1,7 +1,9 @@
 """The compiled OO-MDP: immutable data plus generated functions. Solvers see only this.
 
-A state is `bytes` (see compiler/layout.py for the layout). Names and JSON appear only
-at the edges: `decode`, `describe`, `action_names`.
+A state is `bytes` (see compiler/layout.py): the dynamic variables, one byte each at
+`Variable.index`, then only the grid cells that differ from the start. Read a state's
+cells through `Model.view` (the one accessor that knows the layout). Names and JSON
+appear only at the edges: `decode`, `describe`, `action_names`.
 """
 from __future__ import annotations
 
@@ -26,19 +28,77 @@ class Grid:
     width: int
     depth: int
     height: int
-    base: int                     # index of the first mutable cell in a state
+    base: int                     # the number of variables: a state's changed cells start here
     layers: tuple                 # mutable y layers
     static: bytes                 # the initial grid [y][z][x] (static layers are read from here)
     value_names: tuple            # dense value index -> name
     default: int
 
+    def mutable_index(self, x: int, y: int, z: int) -> int | None:
+        """The mutable cell index of (x, y, z), or None when no action changes that cell."""
+        if y not in self.layers or not (0 <= x < self.width and 0 <= z < self.depth):
+            return None
+        return (self.layers.index(y) * self.depth + z) * self.width + x
+
     def cell(self, state: bytes, x: int, y: int, z: int) -> int:
         if not (0 <= x < self.width and 0 <= z < self.depth and 0 <= y < self.height):
             return self.default
-        area = self.width * self.depth
-        if y in self.layers:
-            return state[self.base + self.layers.index(y) * area + z * self.width + x]
-        return self.static[y * area + z * self.width + x]
+        start = self.static[(y * self.depth + z) * self.width + x]
+        k = self.mutable_index(x, y, z)
+        if k is None or len(state) == self.base:
+            return start
+        key = k.to_bytes(3, "big")
+        p = state.find(key, self.base)
+        while p != -1 and (p - self.base) % 4:
+            p = state.find(key, p + 1)
+        return state[p + 3] if p != -1 else start
+
+    def changed(self, state: bytes) -> dict:
+        """{(x, y, z): value} of the cells that differ from the start."""
+        out, area = {}, self.width * self.depth
+        for p in range(self.base, len(state), 4):
+            k = int.from_bytes(state[p:p + 3], "big")
+            layer, rest = divmod(k, area)
+            z, x = divmod(rest, self.width)
+            out[(x, self.layers[layer], z)] = state[p + 3]
+        return out
+
+    def array(self, state: bytes) -> np.ndarray:
+        """Every cell's value, shape (height, depth, width), indexed [y, z, x]."""
+        w = np.frombuffer(self.static, dtype=np.uint8).reshape(self.height, self.depth, self.width).copy()
+        for (x, y, z), v in self.changed(state).items():
+            w[y, z, x] = v
+        return w
+
+
+class StateView:
+    """One state, read: its variables and cells, without knowing the state layout."""
+
+    __slots__ = ("model", "state")
+
+    def __init__(self, model: "Model", state: bytes):
+        self.model, self.state = model, state
+
+    def raw(self, i: int) -> int:
+        """Variable i's stored offset, value - lo (also `state[model.variables[i].index]`)."""
+        return self.state[self.model.variables[i].index]
+
+    def var(self, i: int) -> int:
+        """Variable i's value (lo added; an enumeration's index; a bool as 0/1)."""
+        v = self.model.variables[i]
+        return self.state[v.index] + v.lo
+
+    def cell(self, x: int, y: int, z: int) -> int:
+        """The cell's value index (`grid.value_names`); `grid.default` outside the grid."""
+        return self.model.grid.cell(self.state, x, y, z)
+
+    def changed(self) -> dict:
+        """{(x, y, z): value} of the mutable cells that differ from the start."""
+        return self.model.grid.changed(self.state)
+
+    def grid(self) -> np.ndarray:
+        """Every cell's value as a uint8 array [y][z][x]."""
+        return self.model.grid.array(self.state)
 
 
 @dataclass(frozen=True)
@@ -70,6 +130,59 @@ class Model:
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
         make = self.lazy.get(name)
         return make(**options) if make else None
+
+    def view(self, state: bytes) -> StateView:
+        """The one accessor for reading a state's variables and cells."""
+        return StateView(self, state)
+
+    def dense(self, state: bytes) -> bytes:
+        """The state in the dense layout: the variables, then every mutable cell (layer, z, x)."""
+        g = self.grid
+        area = g.width * g.depth
+        out = bytearray(state[:g.base])
+        for y in g.layers:
+            out += g.static[y * area:(y + 1) * area]
+        for p in range(g.base, len(state), 4):
+            out[g.base + int.from_bytes(state[p:p + 3], "big")] = state[p + 3]
+        return bytes(out)
+
+    def compact(self, dense: bytes) -> bytes:
+        """The state a dense layout describes (the inverse of `dense`)."""
+        g = self.grid
+        area = g.width * g.depth
+        start = np.frombuffer(b"".join(g.static[y * area:(y + 1) * area] for y in g.layers), dtype=np.uint8)
+        cells = np.frombuffer(dense, dtype=np.uint8, offset=g.base)
+        out = bytearray(dense[:g.base])
+        for k in np.flatnonzero(cells != start):
+            out += ((int(k) << 8) | int(cells[k])).to_bytes(4, "big")
+        return bytes(out)
+
+    def compile_report(self) -> dict:
+        """What `bcc compile --json` (and the server's /compile) print: the compile report,
+        the action names, and bytes per state measured on the first states reached."""
+        report = dict(self.report, action_names=list(self.action_names))
+        if isinstance(report.get("state_bytes"), dict):
+            report["state_bytes"] = {**report["state_bytes"], **self.state_sizes()}
+        return report
+
+    def state_sizes(self, limit: int = 2000) -> dict:
+        """Bytes per state over the first `limit` states a breadth-first walk reaches:
+        {"sampled", "typical" (the mean), "largest"}."""
+        from .errors import ModelError
+        seen, frontier = {self.initial}, [self.initial]
+        try:
+            while frontier and len(seen) < limit:
+                nxt = []
+                for s in frontier:
+                    for _, n in self.successors(s):
+                        if n not in seen and len(seen) < limit:
+                            seen.add(n)
+                            nxt.append(n)
+                frontier = nxt
+        except ModelError:
+            pass  # a model error is reported when a solver meets it; the sample ends there
+        sizes = [len(s) for s in seen]
+        return {"sampled": len(sizes), "typical": round(sum(sizes) / len(sizes), 1), "largest": max(sizes)}
 
     def apply(self, action: int, state: bytes) -> bytes | None:
         return self.apply_fns[action](state)

@@ -1,24 +1,26 @@
-"""The compiled model as documented JSON (format `bcc-model/1`), for other tools to read.
+"""The compiled model as documented JSON (format `bcc-model/2`), for other tools to read.
 
 Why: `bcc compile --json` prints a report for people; this is the model itself -- its
 state layout, objects, grid and grounded actions -- in a form a program can load
 without bcc. Keys (all always present):
 
-- `format`: "bcc-model/1"; `dungeon`, `domain`, `goal` (the goal's source text);
+- `format`: "bcc-model/2"; `dungeon`, `domain`, `goal` (the goal's source text);
 - `report`: the compile report (classes, objects, functions, action schemas, sizes);
-- `state_bytes`: length of a packed state; `initial`: the initial state as a list of bytes;
+- `state_bytes`: length of the packed initial state; `initial`: it as a list of bytes;
 - `variables`: [{label, index, lo, hi, type, names}] -- byte `index` holds `value - lo`,
   enumerations their dense index into `names`, booleans 0/1;
-- `grid`: {width, depth, height, base, layers, value_names, default, cells}: the mutable
-  layers' cells are state bytes from `base` ([layer][z][x]); `cells` is the initial grid
-  as value indices, `cells[y][z][x]` (static layers never change);
+- `grid`: {width, depth, height, base, layers, value_names, default, cells}: a state holds,
+  from byte `base` on, only the cells of the mutable `layers` that differ from `cells`:
+  4 bytes each, the mutable cell index ((layer * depth + z) * width + x, 3 bytes
+  big-endian) then the value, sorted by index; `cells` is the initial grid as value
+  indices, `cells[y][z][x]` (static layers never change);
 - `actions`: [{index, name, cost, preconditions}]: the grounded actions in canonical
   order, each precondition as its source text; `search_actions`: the indices solvers use;
 - `initial_values`: every variable of the initial state by label (enumeration names).
 """
 from __future__ import annotations
 
-FORMAT = "bcc-model/1"
+FORMAT = "bcc-model/2"   # 2: states store changed cells only (1: every mutable cell)
 
 
 def model_json(model) -> dict:

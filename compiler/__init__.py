@@ -62,9 +62,16 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         search = sorted(relevant_actions(actions, sorted(reach.applicable), goal_ir, failure_ir, an))
     else:
         search = list(range(len(actions)))
-    emitter = Emitter(layout, {n: len(e.values) for n, e in dom.enums.items()})
+    enum_sizes = {n: len(e.values) for n, e in dom.enums.items()}
+    emitter = Emitter(layout, enum_sizes)
     ns, source = emitter.build(actions, goal_ir, failure_ir, search)
     _check_start(g, emitter, ns, dungeon, initial)
+
+    @functools.lru_cache(maxsize=1)
+    def dense_functions():
+        """The same functions over the dense layout (`Model.dense`), for the PDDL export."""
+        dense_ns, _ = Emitter(layout, enum_sizes, compact=False).build(actions, goal_ir, failure_ir, search)
+        return dense_ns
 
     grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
                 layout.static_grid, tuple(venum.values), layout.grid_default)
@@ -107,7 +114,9 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         "state_variables": len(layout.slots),
         "mutable_cells": len(layout.layers) * dungeon.width * dungeon.depth,
         "mutable_layers": list(layout.layers),
-        "state_bytes": layout.size,
+        # a state: the variables, then 4 bytes per cell that differs from the start
+        "state_bytes": {"start": len(initial), "per_changed_cell": 4,
+                        "worst": len(initial) + 4 * layout.mutable_cells, "dense": layout.size},
         "goal": goal_src.text,
         "goal_positions": None if goal_positions is None else len(goal_positions),
         "warnings": [str(w) for w in dungeon.warnings],
@@ -123,7 +132,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         position=position, position_static=static_pos, goal_positions=goal_positions,
         report=report, source=source, display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"pattern_database": pattern_database,
-                                                    "relaxed_task": relaxed_task})
+                                                    "relaxed_task": relaxed_task,
+                                                    "dense_functions": dense_functions})
 
 
 def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:

@@ -4,6 +4,12 @@ For each grounded action: `apply_i(s) -> bytes | None` and `why_i(s) -> int | No
 index of the first failing precondition, for `bcc validate`). One `successors(s)` inlines
 every action, evaluating each `let` only when a precondition first needs it. Also
 `goal(s)` and `failure(s)`. Reads come from the old state `s`, writes go to `n`.
+
+States are compact (see compiler/layout.py): the variables, then the changed mutable
+cells. A function that reads cells first expands them, once, into `c` (the start's cells
+when nothing changed, no copy); cell writes are collected in `w` and merged into the new
+state's sorted diff. `compact=False` emits the same functions over the dense layout
+(variables, then every mutable cell), which the PDDL export executes symbolically.
 """
 from __future__ import annotations
 
@@ -38,10 +44,25 @@ def _effect_locals(effects, acc: set) -> set:
     return acc
 
 
+def _writes_cells(effects) -> bool:
+    for e in effects:
+        if isinstance(e, ir.SetCell):
+            return True
+        if isinstance(e, ir.When) and (_writes_cells(e.then) or _writes_cells(e.orelse)):
+            return True
+    return False
+
+
 class Emitter:
-    def __init__(self, layout: Layout, enum_sizes: dict):
+    def __init__(self, layout: Layout, enum_sizes: dict, compact: bool = True):
         self.L = layout
         self.enum_sizes = enum_sizes
+        self.compact = compact
+        # where cell reads and writes go: the expanded cells `c` and the write dict `w`
+        # (compact), or the state itself past grid_base (dense)
+        self.read_cells, self.write_cells = ("c", "w") if compact else ("s", "n")
+        self.cell_base = 0 if compact else layout.grid_base
+        self.uses_cells = False   # set while emitting a function that reads cells
         self.ns: dict = {"SG": layout.static_grid, "ModelError": ModelError}
         self.tables: dict = {}
         self.tmp = itertools.count()
@@ -65,8 +86,9 @@ class Emitter:
 
     def _install_helpers(self):
         L, area = self.L, self.area
-        W, D, H, GB, DEF = L.width, L.depth, L.height, L.grid_base, L.grid_default
+        W, D, H, GB, DEF = L.width, L.depth, L.height, self.cell_base, L.grid_default
         layer_of = {y: i for i, y in enumerate(L.layers)}
+        NV, S0 = L.grid_base, L.start_cells
 
         def cell(s, x, y, z):
             if not (0 <= x < W and 0 <= z < D and 0 <= y < H):
@@ -91,7 +113,32 @@ class Emitter:
         def out_of_range(label, v, lo, hi):
             raise ModelError(f"{label} would become {v}, outside its range [{lo}, {hi}]")
 
-        self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range)
+        def cells(s):
+            """The mutable cells of compact state `s`, expanded (the start's when unchanged)."""
+            if len(s) == NV:
+                return S0
+            c = bytearray(S0)
+            for p in range(NV, len(s), 4):
+                c[(s[p] << 16) | (s[p + 1] << 8) | s[p + 2]] = s[p + 3]
+            return c
+
+        def merge(n, w):
+            """`n` (a copy of the old state, variables written) with the cell writes `w` merged
+            into its sorted diff; cells back at their start value leave the diff."""
+            if len(n) > NV:
+                d = {(n[p] << 16) | (n[p + 1] << 8) | n[p + 2]: n[p + 3] for p in range(NV, len(n), 4)}
+                d.update(w)
+                del n[NV:]
+            else:
+                d = w
+            for k in sorted(d):
+                v = d[k]
+                if v != S0[k]:
+                    n += ((k << 8) | v).to_bytes(4, "big")
+            return bytes(n)
+
+        self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,
+                       _merge=merge)
 
     # ---- expressions -------------------------------------------------------------------
     def simple(self, node) -> bool:
@@ -189,7 +236,8 @@ class Emitter:
     def cell(self, node: ir.Cell) -> str:
         L = self.L
         if not isinstance(node.y, ir.Const) or not (self.simple(node.x) and self.simple(node.z)):
-            return f"_cell(s, {self.ex(node.x)}, {self.ex(node.y)}, {self.ex(node.z)})"
+            self.uses_cells = True
+            return f"_cell({self.read_cells}, {self.ex(node.x)}, {self.ex(node.y)}, {self.ex(node.z)})"
         y = node.y.value
         if not 0 <= y < L.height:
             return str(L.grid_default)
@@ -198,7 +246,8 @@ class Emitter:
         if layer is None:
             base, arr = y * self.area, "SG"
         else:
-            base, arr = L.grid_base + layer * self.area, "s"
+            base, arr = self.cell_base + layer * self.area, self.read_cells
+            self.uses_cells = True
         checks = []
         if not self.within(node.x, 0, L.width - 1):
             checks.append(f"0 <= {X} < {L.width}")
@@ -249,13 +298,15 @@ class Emitter:
         value = self.ex(e.value)
         if isinstance(e.y, ir.Const) and L.layer_index(e.y.value) is not None and self.simple(e.x) and self.simple(e.z):
             X, Z = self.ex(e.x), self.ex(e.z)
-            base = L.grid_base + L.layer_index(e.y.value) * self.area
+            base = self.cell_base + L.layer_index(e.y.value) * self.area
+            w = self.write_cells
             lines = []
             if not (self.within(e.x, 0, L.width - 1) and self.within(e.z, 0, L.depth - 1)):
                 lines.append(f"{indent}if not (0 <= {X} < {L.width} and 0 <= {Z} < {L.depth}): "
-                             f"_set_cell(n, {X}, {e.y.value}, {Z}, 0, {action!r})")
-            return lines + [f"{indent}n[{base} + {Z} * {L.width} + {X}] = {value}"]
-        return [f"{indent}_set_cell(n, {self.ex(e.x)}, {self.ex(e.y)}, {self.ex(e.z)}, {value}, {action!r})"]
+                             f"_set_cell({w}, {X}, {e.y.value}, {Z}, 0, {action!r})")
+            return lines + [f"{indent}{w}[{base} + {Z} * {L.width} + {X}] = {value}"]
+        return [f"{indent}_set_cell({self.write_cells}, {self.ex(e.x)}, {self.ex(e.y)}, {self.ex(e.z)}, "
+                f"{value}, {action!r})"]
 
     # ---- whole functions ---------------------------------------------------------------
     def action_parts(self, a: GroundAction):
@@ -277,8 +328,25 @@ class Emitter:
             yield "pre", self.ex(cond)
         yield from need(_effect_locals(a.effects, set()))
 
+    def _new_state(self, a: GroundAction, indent: str) -> tuple[list[str], str]:
+        """Lines that make the next state `n` and apply a's effects, and the expression of
+        the finished state."""
+        lines = [f"{indent}n = bytearray(s)"]
+        writes_cells = self.compact and _writes_cells(a.effects)
+        if writes_cells:
+            lines.append(f"{indent}w = {{}}")
+        lines += self.effects(a.effects, indent, a.name)
+        return lines, "_merge(n, w)" if writes_cells else "bytes(n)"
+
+    def _function(self, header: str, body: list[str]) -> str:
+        """A function whose body reads cells gets their expansion as its first line."""
+        prologue = ["    c = _cells(s)"] if self.compact and self.uses_cells else []
+        self.uses_cells = False
+        return "\n".join([header] + prologue + body)
+
     def successors_source(self, actions: list[GroundAction], search: list[int]) -> str:
-        lines = ["def successors(s):", "    out = []"]
+        self.uses_cells = False
+        lines = ["    out = []"]
         for i in search:
             a = actions[i]
             lines.append(f"    # action {i}")  # a number, never the name: comments carry no input text
@@ -289,20 +357,21 @@ class Emitter:
                 else:
                     lines.append(f"{indent}if {text}:")
                     indent += "    "
-            lines.append(f"{indent}n = bytearray(s)")
-            lines += self.effects(a.effects, indent, a.name)
-            lines.append(f"{indent}out.append(({i}, bytes(n)))")
+            made, result = self._new_state(a, indent)
+            lines += made
+            lines.append(f"{indent}out.append(({i}, {result}))")
         lines.append("    return out")
-        return "\n".join(lines)
+        return self._function("def successors(s):", lines)
 
     def apply_source(self, i: int, a: GroundAction) -> str:
-        lines = [f"def apply_{i}(s):"]
+        self.uses_cells = False
+        lines = []
         for kind, text in self.action_parts(a):
             lines.append(f"    {text}" if kind == "let" else f"    if not {text}: return None")
-        lines.append("    n = bytearray(s)")
-        lines += self.effects(a.effects, "    ", a.name)
-        lines.append("    return bytes(n)")
-        lines += [f"def why_{i}(s):"]
+        made, result = self._new_state(a, "    ")
+        lines += made + [f"    return {result}"]
+        apply = self._function(f"def apply_{i}(s):", lines)
+        lines = []
         k = 0
         for kind, text in self.action_parts(a):
             if kind == "let":
@@ -311,10 +380,12 @@ class Emitter:
                 lines.append(f"    if not {text}: return {k}")
                 k += 1
         lines.append("    return None")
-        return "\n".join(lines)
+        return apply + "\n" + self._function(f"def why_{i}(s):", lines)
 
     def predicate_source(self, name: str, node) -> str:
-        return f"def {name}(s):\n    return {self.ex(node)}"
+        self.uses_cells = False
+        body = [f"    return {self.ex(node)}"]
+        return self._function(f"def {name}(s):", body)
 
     def build(self, actions: list[GroundAction], goal, failure, search: list[int]) -> tuple[dict, str]:
         """`search`: the actions `successors` generates (all but those pruned as irrelevant)."""

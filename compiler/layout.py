@@ -1,9 +1,16 @@
-"""Fix the state layout: one byte per dynamic variable, then the grid's mutable layers.
+"""Fix the state layout: one byte per dynamic variable, then the changed grid cells.
 
 A state is an immutable `bytes`: hashable, compact, cheap to copy (one `bytearray`).
 Each dynamic attribute of each object gets one byte holding `value - low`; enumerations
-hold their dense index, booleans 0/1. Grid layers that some action can change follow,
-one byte per cell; the other layers stay in a constant table, outside the state.
+hold their dense index, booleans 0/1. The grid layers that some action can change are
+numbered cell by cell (layer, then z, then x: the "mutable cell index"); a state stores
+only the cells whose value differs from the start's, as 4-byte entries (the index in 3
+bytes big-endian, then the value) sorted by index. So the size of a state grows with
+what changed, not with the map, and equal worlds give equal bytes. Everything else stays
+in constant tables outside the state. Read states through `Model.view`.
+
+The dense layout (the variables, then every mutable cell) remains for the edges that
+want it (`Model.dense`, and the PDDL export's symbolic run of the dense functions).
 """
 from __future__ import annotations
 
@@ -51,13 +58,25 @@ class Layout:
 
     @property
     def size(self) -> int:
-        return self.grid_base + len(self.layers) * self.width * self.depth
+        """Bytes of a dense state (every mutable cell)."""
+        return self.grid_base + self.mutable_cells
+
+    @property
+    def mutable_cells(self) -> int:
+        return len(self.layers) * self.width * self.depth
+
+    @property
+    def start_cells(self) -> bytes:
+        """The mutable cells at the start, by mutable cell index."""
+        area = self.width * self.depth
+        return b"".join(self.static_grid[y * area:(y + 1) * area] for y in self.layers)
 
     def layer_index(self, y: int) -> int | None:
         return self.layers.index(y) if y in self.layers else None
 
     def initial(self, grounder: Grounder, d: Dungeon) -> bytes:
-        out = bytearray(self.size)
+        """The start state: its variables (no cell has changed yet)."""
+        out = bytearray(self.grid_base)
         for slot in self.slots:
             value = grounder.value_const(slot.var.cls, slot.var.attr,
                                          grounder.object_value(slot.var.owner, slot.var.cls, slot.var.attr)).value
@@ -66,9 +85,6 @@ class Layout:
                 message = f"{slot.var.label} = {value} is outside its range [{slot.lo}, {slot.hi}]"
                 raise error_at(*where, message) if where else BccError(message, d.path)
             out[slot.index] = int(value) - slot.lo
-        area = self.width * self.depth
-        for i, y in enumerate(self.layers):
-            out[self.grid_base + i * area: self.grid_base + (i + 1) * area] = self.static_grid[y * area:(y + 1) * area]
         return bytes(out)
 
 

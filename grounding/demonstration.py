@@ -33,7 +33,7 @@ def state_from_snapshot(model: Model, snap, path: str | None = None, where: str 
     if not isinstance(snap, dict) or not isinstance(snap.get("variables"), dict) \
             or not isinstance(snap.get("cells"), list):
         raise BccError(f"{where}: a snapshot is an object with \"variables\" (an object) and \"cells\" (a list)", path)
-    state = bytearray(model.initial)
+    state = bytearray(model.dense(model.initial))
     given = dict(snap["variables"])
     for v in model.variables:
         if v.label not in given:
@@ -68,7 +68,7 @@ def state_from_snapshot(model: Model, snap, path: str | None = None, where: str 
                        if (x, y, z) not in seen)
         raise BccError(f"{where}: {missing} cell(s) of the mutable layers {list(g.layers)} are missing, "
                        f"e.g. ({x}, {y}, {z})", path)
-    return bytes(state)
+    return model.compact(bytes(state))
 
 
 def _encode(v, value, path, where) -> int:
@@ -210,12 +210,11 @@ def changes(model: Model, a: bytes, b: bytes) -> list[tuple[str, object, object]
     da, db = model.decode(a), model.decode(b)
     out = [(k, da[k], db[k]) for k in da if da[k] != db[k]]
     g = model.grid
-    for y in g.layers:
-        for z in range(g.depth):
-            for x in range(g.width):
-                ca, cb = g.cell(a, x, y, z), g.cell(b, x, y, z)
-                if ca != cb:
-                    out.append((f"block ({x}, {y}, {z})", g.value_names[ca], g.value_names[cb]))
+    va, vb = model.view(a), model.view(b)
+    for x, y, z in sorted(set(va.changed()) | set(vb.changed()), key=lambda c: (c[1], c[2], c[0])):
+        ca, cb = va.cell(x, y, z), vb.cell(x, y, z)
+        if ca != cb:
+            out.append((f"block ({x}, {y}, {z})", g.value_names[ca], g.value_names[cb]))
     return out
 
 

@@ -42,7 +42,7 @@ class Predicates:
         initial = layout.initial(g, d)
         reach = reachable(layout, actions, {s.var: initial[s.index] + s.lo for s in layout.slots}, len(venum.values))
         layout = make_layout(g, d, dynamic, {y for y, vals in reach.written.items() if vals})
-        if layout.initial(g, d) != model.initial or layout.size != len(model.initial):
+        if layout.initial(g, d) != model.initial or layout.layers != model.grid.layers:
             raise InternalError(f"the predicate layout of {d.name} differs from the compiled model's")
         self._g, self._layout, self._reach = g, layout, reach
         self._an = Analysis(layout, len(venum.values))

@@ -117,13 +117,14 @@ def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
     from ..errors import BccError
     from .symbolic import explore, symbolic_functions
     fns = symbolic_functions(model)
-    n = len(model.initial)
+    initial = model.dense(model.initial)   # the symbolic functions read the dense layout
+    n = len(initial)
     cells = set(_cell_bytes(model))
     position = {p[0] for p in model.position if p is not None}
     exact_idx = tuple(i for i in range(n) if i not in cells and i not in position)
     exact = set(exact_idx)
     n_values = len(model.grid.value_names)
-    dom = [{v} for v in model.initial]
+    dom = [{v} for v in initial]
     # Chaotic iteration: an action whose grounding is slow (destroy, place: they read the
     # inventory) is re-grounded only when the cheap ones (moves, turns) add nothing more.
     # Leaves grounded over older domains may lack cases (new values) or test less (a byte
@@ -142,7 +143,7 @@ def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
                 leaves[a] = list(explore(_guarded(apply, fns["failure"]), frozen))
                 cost[a], grounded_over[a] = len(leaves[a]), frozen
         groups = _abstract_ops(leaves, exact, cells, n_values)
-        found = _abstract_reach(model.initial, exact_idx, sorted(cells), n_values, groups, max_states)
+        found = _abstract_reach(initial, exact_idx, sorted(cells), n_values, groups, max_states)
         if found is None:
             raise BccError(f"{model.name}: more than {max_states:,} abstract states (inventory and counts of "
                            "cell values) are reachable; the grounded PDDL export explores them to bound each "

@@ -205,8 +205,16 @@ def _bytes(n):
 
 
 def symbolic_functions(model) -> dict:
-    """Copies of the model's generated functions whose globals make them symbolic."""
-    g = model.apply_fns[0].__globals__ if model.apply_fns else {}
+    """Copies of the model's generated functions whose globals make them symbolic: the
+    dense-layout variants (`Model.dense`: every mutable cell one byte), so a leaf's bytes
+    are the variables and cells themselves."""
+    dense = model.data("dense_functions")
+    if dense is not None:
+        apply_fns = [dense[f"apply_{i}"] for i in range(len(model.apply_fns))]
+        g = dense
+    else:
+        apply_fns = list(model.apply_fns)
+        g = apply_fns[0].__globals__ if apply_fns else {}
     ns = dict(g)
     for k, v in g.items():
         if isinstance(v, tuple) and k.startswith("T"):
@@ -215,7 +223,7 @@ def symbolic_functions(model) -> dict:
 
     def rebind(fn):
         return types.FunctionType(fn.__code__, ns, fn.__name__, fn.__defaults__, fn.__closure__)
-    out = {"apply": [rebind(f) for f in model.apply_fns]}
+    out = {"apply": [rebind(f) for f in apply_fns]}
     for name in ("goal", "failure"):
         out[name] = rebind(g[name]) if name in g else None
     return out

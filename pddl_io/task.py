@@ -46,6 +46,18 @@ class Task:
     action_names: tuple       # the model's canonical action names
     use_costs: bool
     stats: dict = field(default_factory=dict)
+    layout: tuple = (None, None)   # the model's (dense, compact): a fact's byte is a dense-layout byte
+
+    def facts_of(self, state: bytes) -> frozenset:
+        dense = self.layout[0]
+        return frozenset(enumerate(dense(state) if dense else state))
+
+    def state_of(self, facts) -> bytes:
+        out = bytearray(len(self.predicates))
+        for i, v in facts:
+            out[i] = v
+        compact = self.layout[1]
+        return compact(bytes(out)) if compact else bytes(out)
 
     def atom(self, fact, flat: bool = False) -> str:
         """`(cell x1 y0 z3 lava)`, or with `flat` the 0-ary `(cell_x1_y0_z3_lava)`."""
@@ -63,15 +75,6 @@ class Task:
         if not hasattr(self, "_names"):
             self._names = {op.name: op for op in self.operators}
         return self._names
-
-    def facts_of(self, state: bytes) -> frozenset:
-        return frozenset(enumerate(state))
-
-    def state_of(self, facts) -> bytes:
-        out = bytearray(len(self.predicates))
-        for i, v in facts:
-            out[i] = v
-        return bytes(out)
 
     def successors(self, facts: frozenset) -> list:
         """(operator, next facts) for every applicable operator: a STRIPS reference semantics."""
@@ -140,7 +143,8 @@ def build_task(model, max_states: int | None = None) -> Task:
     domains = domains_for(model, DEFAULT_MAX_STATES if max_states is None else max_states)
     dom = domains.values
     fns = symbolic_functions(model)
-    predicates, value_names = _naming(model, len(model.initial))
+    initial = model.dense(model.initial)   # symbolic_functions read the dense layout
+    predicates, value_names = _naming(model, len(initial))
     ops, errors, unreachable = [], 0, 0
     for a, leaves in enumerate(domains.leaves):
         stem = re.sub(r"[^a-z0-9_]+", "_", model.action_names[a].lower())
@@ -172,8 +176,8 @@ def build_task(model, max_states: int | None = None) -> Task:
     n_facts = sum(len(d) for d in dom)
     return Task(name=name, model_name=model.name, domain_name=model.report.get("domain", ""),
                 goal_text=model.goal_text, predicates=predicates, value_names=value_names, operators=ops,
-                init=tuple(enumerate(model.initial)), goal_terms=goal_terms, domains=domains,
-                action_names=tuple(model.action_names), use_costs=use_costs,
+                init=tuple(enumerate(initial)), goal_terms=goal_terms, domains=domains,
+                action_names=tuple(model.action_names), use_costs=use_costs, layout=(model.dense, model.compact),
                 stats={"operators": len(ops), "facts": n_facts, "goal_terms": len(goal_terms),
                        "domains": domains.source, "abstract_states": domains.states, "rounds": domains.rounds,
                        "error_leaves": errors, "unreachable_leaves": unreachable})

@@ -65,7 +65,7 @@ class CompiledCache:
         if cached is None:
             if trusted(ref, goal):
                 model = self.model(ref, goal)[0]
-                cached = ("ok", dict(model.report, action_names=list(model.action_names)))
+                cached = ("ok", model.compile_report())
             else:
                 with self._checks:
                     outcome = sandbox.run("compile", {"ref": {"name": ref.name, "text": ref.text}, "goal": goal},

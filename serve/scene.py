@@ -51,19 +51,8 @@ def scene(model: Model, rooms: list[dict]) -> dict:
 
 def frame(model: Model, state: bytes) -> dict:
     g = model.grid
-    changed = []
-    if g.layers:
-        area = g.width * g.depth
-        start = model.initial
-        cols = set()
-        for i, y in enumerate(g.layers):
-            base = g.base + i * area
-            if state[base:base + area] == start[base:base + area]:
-                continue
-            for k in range(area):
-                if state[base + k] != start[base + k]:
-                    cols.add((k % g.width, k // g.width))
-        changed = [[x, z, list(model.column(state, x, z))] for x, z in sorted(cols)]
+    cols = {(x, z) for x, _, z in model.view(state).changed()}
+    changed = [[x, z, list(model.column(state, x, z))] for x, z in sorted(cols)]
     return {"agent": list(model.agent_position(state)), "facing": facing_name(model, state),
             "variables": model.decode(state), "changed": changed,
             "goal": bool(model.is_goal(state)), "failure": bool(model.is_failure(state))}

@@ -49,7 +49,7 @@ def load_model(spec: dict):
 
 def compile_task(spec: dict, rss_ceiling: float) -> dict:
     model = load_model(spec)
-    return dict(model.report, action_names=list(model.action_names))
+    return model.compile_report()
 
 
 def solve_task(spec: dict, rss_ceiling: float) -> dict:
@@ -105,7 +105,7 @@ def host_main(conn, memory_mb: float, cache_size: int) -> None:
                 payload = demonstration_body(model, spec["ref"].get("name") is None, spec["actions"],
                                              spec.get("command"))
             else:
-                payload = dict(model.report, action_names=list(model.action_names))
+                payload = model.compile_report()
             message = ("ok", payload)
         except MemoryError:
             models.clear()

@@ -145,14 +145,13 @@ class Perception:
         axes = self._axes(s)
         da, dr = self._to_frame(axes, delta[0], delta[2])
         x, y, z = self.model.agent_position(s)
-        g = self.model.grid
         cells = []
-        for i in range(g.base, len(s)):
-            if s[i] != n[i]:
-                layer, rest = divmod(i - g.base, self.area)
-                cz, cx = divmod(rest, g.width)
+        vs, vn = self.model.view(s), self.model.view(n)
+        for cx, cy, cz in sorted(set(vs.changed()) | set(vn.changed()), key=lambda c: (c[1], c[2], c[0])):
+            v = vn.cell(cx, cy, cz)
+            if vs.cell(cx, cy, cz) != v:
                 ca, cr = self._to_frame(axes, cx - x, cz - z)
-                cells.append((ca, g.layers[layer] - y, cr, n[i]))
+                cells.append((ca, cy - y, cr, v))
         return sets, (da, delta[1], dr), tuple(cells)
 
     def apply_effect(self, s, eff):
@@ -173,12 +172,15 @@ class Perception:
         if cells:
             g = self.model.grid
             x, y, z = self.model.agent_position(s)
+            n = bytearray(self.model.dense(bytes(n)))   # cells by position; compact again below
             for ca, cy, cr, v in cells:
                 cdx, cdz = self._to_world(axes, ca, cr)
                 cx, cy, cz = x + cdx, y + cy, z + cdz
-                if cy not in g.layers or not (0 <= cx < g.width and 0 <= cz < g.depth):
+                k = g.mutable_index(cx, cy, cz)
+                if k is None:
                     return None
-                n[g.base + g.layers.index(cy) * self.area + cz * g.width + cx] = v
+                n[g.base + k] = v
+            return self.model.compact(bytes(n))
         return bytes(n)
 
     def locus(self, eff):

@@ -103,7 +103,7 @@ def test_compile_report_and_atomic_output(tmp_path):
     assert result.exit_code == 0
     report = json.loads(result.stdout)
     written = json.loads(out.read_text())  # the model itself (see model_json.py), report included
-    assert written["format"] == "bcc-model/1" and written["report"]["grounded_actions"] == report["grounded_actions"]
+    assert written["format"] == "bcc-model/2" and written["report"]["grounded_actions"] == report["grounded_actions"]
     assert len(written["initial"]) == written["state_bytes"]
     assert [a["name"] for a in written["actions"]][:2] == ["move_forward", "rotate_left"]
     assert report["grounded_actions"] == 8

@@ -36,7 +36,8 @@ def test_static_layers_stay_out_of_the_state():
     m = compiled("bridge")
     # Actions only add/remove blocks at y = a.y - 1 = 0 and y = a.y = 1 (a.y never changes).
     assert m.grid.layers == (0, 1)
-    assert len(m.initial) == 24 + 2 * 7 * 7
+    assert len(m.initial) == 24                       # no cell has changed yet
+    assert len(m.dense(m.initial)) == 24 + 2 * 7 * 7  # dense: every cell of the two layers
     # agent.y is folded into the code as a constant: it is no state variable.
     assert "agent.y" not in m.decode(m.initial)
 

@@ -9,6 +9,7 @@ so on big mazes with many stones the independent reference is the search that do
 finish. The test also counts how many mazes had a reference that does not use the
 pattern database at all (BFS, blind or manhattan), so it cannot silently lose its teeth.
 
+The unmarked part is a quick subset; `-m slow` runs the 200+ mazes.
 """
 from __future__ import annotations
 
@@ -88,6 +89,18 @@ def test_quick_subset_agrees(tmp_path):
     cases = [c for c in maze_cases(40, seed=2, widest=17, most_stones=1, corners=False) if c[2] + c[3] <= 1][:8]
     independent = run(tmp_path, cases, Budget(max_states=50_000, time_limit=30), idastar_seconds=2)
     assert independent == len(cases)
+
+
+SLOW_CASES = maze_cases(210, seed=7)
+CHUNK = 30
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("first", range(0, len(SLOW_CASES), CHUNK))
+def test_two_hundred_mazes_agree(tmp_path, first):
+    cases = SLOW_CASES[first:first + CHUNK]
+    independent = run(tmp_path, cases, Budget(max_states=40_000, time_limit=30), idastar_seconds=2)
+    assert independent >= len(cases) // 3, independent
 
 
 @pytest.mark.parametrize("name", ["bridge", "easy_maze", "tough_maze"])

@@ -110,7 +110,7 @@ def test_fixpoint_domains_cover_every_reachable_state():
                 stack.append(t)
     assert len(seen) > 10_000
     for s in seen:
-        assert all(v in task.domains.values[i] for i, v in enumerate(s))
+        assert all(v in task.domains.values[i] for i, v in enumerate(m.dense(s)))
 
 
 @pytest.mark.slow
