@@ -74,6 +74,19 @@ class Result:
         return asdict(self)
 
 
+def table_growth_mb(stored: int, growth: int, tables: int = 2) -> float:
+    """Memory the search's hash tables (a parent map, a cost map) take at once when they
+    grow before the next check, else 0. With small states a table's resize is the
+    biggest single allocation: a dict of n entries moves to a new table of about 40 bytes
+    per slot, twice its old size, when it is 2/3 full (CPython)."""
+    slots = 8
+    while slots * 2 // 3 < stored:
+        slots *= 2
+    if stored + 2 * growth < slots * 2 // 3:
+        return 0.0
+    return tables * 40 * slots / 2**20
+
+
 class Meter:
     """Time, memory and progress bookkeeping for a search loop."""
 
@@ -83,6 +96,7 @@ class Meter:
         self.base_mb = current_rss_mb()
         self.peak_mb = self.base_mb
         self.last_report = self.start
+        self.last_stored = 0
 
     def elapsed(self) -> float:
         return time.perf_counter() - self.start
@@ -97,7 +111,8 @@ class Meter:
             return "time_limit"
         mb = current_rss_mb()
         self.peak_mb = max(self.peak_mb, mb)
-        if b.max_memory_mb is not None and mb > b.max_memory_mb:
+        growth, self.last_stored = stored - self.last_stored, stored
+        if b.max_memory_mb is not None and mb + table_growth_mb(stored, growth) > b.max_memory_mb:
             return "max_memory"
         if self.progress is not None and now - self.last_report >= 0.5:
             self.last_report = now
