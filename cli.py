@@ -11,7 +11,6 @@ import sys
 
 import click
 
-from . import __version__
 from .errors import BccError, ModelError
 
 from .cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, print_result, progress_enabled,
@@ -47,7 +46,7 @@ class BccGroup(click.Group):
 
 
 @click.group(cls=BccGroup, context_settings={"help_option_names": ["-h", "--help"]})
-@click.version_option(__version__, prog_name="bcc")
+@click.version_option(package_name="bcc", prog_name="bcc")
 def main():
     """bcc compiles declarative YAML dungeons into an OO-MDP and solves them.
 

@@ -7,10 +7,11 @@ appear only at the edges: `decode`, `describe`, `action_names`.
 """
 from __future__ import annotations
 
+import array
+import sys
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, Iterable
 
-import numpy as np
 
 
 @dataclass(frozen=True)
@@ -21,6 +22,20 @@ class Variable:
     hi: int
     type: str             # "int", "bool" or an enumeration name
     names: tuple = ()     # value names for enumerations
+
+
+def cell_entries(diff) -> Iterable[int]:
+    """The changed-cell entries of a state's tail (`state[grid.base:]`), each the int
+    (mutable cell index << 8) | value; stored as 4 little-endian bytes, sorted by index."""
+    if sys.byteorder == "little":
+        return memoryview(diff).cast("I")
+    a = array.array("I", bytes(diff))
+    a.byteswap()
+    return a
+
+
+def pack_entry(index: int, value: int) -> bytes:
+    return ((index << 8) | value).to_bytes(4, "little")
 
 
 @dataclass(frozen=True)
@@ -47,24 +62,23 @@ class Grid:
         k = self.mutable_index(x, y, z)
         if k is None or len(state) == self.base:
             return start
-        key = k.to_bytes(3, "big")
-        p = state.find(key, self.base)
-        while p != -1 and (p - self.base) % 4:
-            p = state.find(key, p + 1)
-        return state[p + 3] if p != -1 else start
+        for e in cell_entries(state[self.base:]):
+            if e >> 8 == k:
+                return e & 255
+        return start
 
     def changed(self, state: bytes) -> dict:
         """{(x, y, z): value} of the cells that differ from the start."""
         out, area = {}, self.width * self.depth
-        for p in range(self.base, len(state), 4):
-            k = int.from_bytes(state[p:p + 3], "big")
-            layer, rest = divmod(k, area)
+        for e in cell_entries(state[self.base:]):
+            layer, rest = divmod(e >> 8, area)
             z, x = divmod(rest, self.width)
-            out[(x, self.layers[layer], z)] = state[p + 3]
+            out[(x, self.layers[layer], z)] = e & 255
         return out
 
-    def array(self, state: bytes) -> np.ndarray:
+    def array(self, state: bytes) -> "numpy.ndarray":
         """Every cell's value, shape (height, depth, width), indexed [y, z, x]."""
+        import numpy as np
         w = np.frombuffer(self.static, dtype=np.uint8).reshape(self.height, self.depth, self.width).copy()
         for (x, y, z), v in self.changed(state).items():
             w[y, z, x] = v
@@ -96,7 +110,7 @@ class StateView:
         """{(x, y, z): value} of the mutable cells that differ from the start."""
         return self.model.grid.changed(self.state)
 
-    def grid(self) -> np.ndarray:
+    def grid(self) -> "numpy.ndarray":
         """Every cell's value as a uint8 array [y][z][x]."""
         return self.model.grid.array(self.state)
 
@@ -119,7 +133,7 @@ class Model:
     grid: Grid
     position: tuple                            # agent position per axis: (state index, lo) or None if static
     position_static: tuple                     # the static axes' values (None for dynamic ones)
-    goal_positions: np.ndarray | None          # agent positions where the goal may hold, shape (k, 3)
+    goal_positions: "numpy.ndarray | None"          # agent positions where the goal may hold, shape (k, 3)
     report: dict = field(default_factory=dict) # compile statistics for `bcc compile`
     source: str = ""                           # the generated Python, for the curious
     display: dict = field(default_factory=dict)  # for drawing states (render.py)
@@ -142,19 +156,20 @@ class Model:
         out = bytearray(state[:g.base])
         for y in g.layers:
             out += g.static[y * area:(y + 1) * area]
-        for p in range(g.base, len(state), 4):
-            out[g.base + int.from_bytes(state[p:p + 3], "big")] = state[p + 3]
+        for e in cell_entries(state[g.base:]):
+            out[g.base + (e >> 8)] = e & 255
         return bytes(out)
 
     def compact(self, dense: bytes) -> bytes:
         """The state a dense layout describes (the inverse of `dense`)."""
+        import numpy as np
         g = self.grid
         area = g.width * g.depth
         start = np.frombuffer(b"".join(g.static[y * area:(y + 1) * area] for y in g.layers), dtype=np.uint8)
         cells = np.frombuffer(dense, dtype=np.uint8, offset=g.base)
         out = bytearray(dense[:g.base])
         for k in np.flatnonzero(cells != start):
-            out += ((int(k) << 8) | int(cells[k])).to_bytes(4, "big")
+            out += pack_entry(int(k), int(cells[k]))
         return bytes(out)
 
     def compile_report(self) -> dict:

@@ -11,8 +11,8 @@ without bcc. Keys (all always present):
   enumerations their dense index into `names`, booleans 0/1;
 - `grid`: {width, depth, height, base, layers, value_names, default, cells}: a state holds,
   from byte `base` on, only the cells of the mutable `layers` that differ from `cells`:
-  4 bytes each, the mutable cell index ((layer * depth + z) * width + x, 3 bytes
-  big-endian) then the value, sorted by index; `cells` is the initial grid as value
+  4 bytes each, the little-endian int (index << 8) | value where index is the mutable
+  cell index (layer * depth + z) * width + x, sorted by index; `cells` is the initial grid as value
   indices, `cells[y][z][x]` (static layers never change);
 - `actions`: [{index, name, cost, preconditions}]: the grounded actions in canonical
   order, each precondition as its source text; `search_actions`: the indices solvers use;

@@ -21,7 +21,6 @@ from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeo
 from .emit import Emitter, GroundAction
 from .ground import Ctx, Grounder, check_nesting
 from .layout import make_layout
-from .parse import parse_expression
 from .reachability import Analysis, reachable
 from .relevance import relevant_actions
 from .source import Origin
@@ -32,7 +31,7 @@ __all__ = ["compile_dungeon", "load_dungeon", "load_domain", "shipped_dungeons",
 def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True) -> Model:
     """Load, check, ground, analyse and emit. With `prune`, `successors` leaves out actions
     that can never apply or never matter for the goal (relevance.py); `apply` keeps all."""
-    dungeon = load_dungeon(ref)
+    dungeon = _load(ref)
     goal_src = _goal(dungeon, goal)
     # Pass 1 finds which attributes and grid layers actions change; pass 2 folds the rest.
     Grounder(dungeon, None).check_domain()
@@ -91,7 +90,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         """The delete-relaxed view (relaxed.py), built once; None if it exceeds its limits."""
         if "task" not in built:
             try:
-                built["task"] = relaxed.build(layout, actions, search, goal_ir, reach, n_values, initial, time_limit)
+                built["task"] = relaxed.build(layout, actions, search, goal_ir, reach, n_values,
+                                               initial + layout.start_cells, time_limit)  # dense
             except relaxed.RelaxedTooBig as exc:
                 if "time" in str(exc):
                     return None  # another call, with more time, may still build it
@@ -155,8 +155,16 @@ def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, init
     raise error_at(*where, message + " (is the agent inside a block?)") if where else BccError(message, dungeon.path)
 
 
+def _load(ref) -> Dungeon:
+    """load_dungeon, through the on-disk cache (compiler/cache.py) when `ref` names a file."""
+    from .cache import load_cached
+    path = resolve_dungeon_path(ref)
+    return load_cached(path, load_dungeon)
+
+
 def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
     if goal is not None:
+        from .parse import parse_expression   # lark: imported only when text is parsed
         where = Origin("--goal", 1, 1)
         return Expr(parse_expression(goal, where), where, goal)
     if dungeon.goal is None:

@@ -12,7 +12,6 @@ from pathlib import Path
 from ..errors import BccError
 from . import ast
 from .names import check_name, check_text
-from .parse import parse_effects, parse_expression
 from .limits import MAX_REF_LENGTH, shorten
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest, Origin
 
@@ -307,6 +306,7 @@ def _expr(container, key, effects: bool = False) -> Expr:
         text = "true" if text else "false"
     elif isinstance(text, int):
         text = str(text)
+    from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
     node = parse_effects(text, where) if effects else parse_expression(text, where)
     return Expr(node, where, text)
 

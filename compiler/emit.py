@@ -13,10 +13,12 @@ state's sorted diff. `compact=False` emits the same functions over the dense lay
 """
 from __future__ import annotations
 
+import functools
 import itertools
 from dataclasses import dataclass
 
 from ..errors import BccError, InternalError, ModelError
+from ..model import cell_entries, pack_entry
 from . import ir
 from .layout import Layout
 
@@ -113,20 +115,24 @@ class Emitter:
         def out_of_range(label, v, lo, hi):
             raise ModelError(f"{label} would become {v}, outside its range [{lo}, {hi}]")
 
-        def cells(s):
-            """The mutable cells of compact state `s`, expanded (the start's when unchanged)."""
-            if len(s) == NV:
-                return S0
+        @functools.lru_cache(maxsize=1024)
+        def expand(diff):
             c = bytearray(S0)
-            for p in range(NV, len(s), 4):
-                c[(s[p] << 16) | (s[p + 1] << 8) | s[p + 2]] = s[p + 3]
-            return c
+            for e in cell_entries(diff):
+                c[e >> 8] = e & 255
+            return bytes(c)
+
+        def cells(s):
+            """The mutable cells of compact state `s`, expanded: the start's when nothing
+            changed, else cached per distinct diff (states that differ only in their
+            variables, e.g. the agent's position, share one expansion)."""
+            return S0 if len(s) == NV else expand(s[NV:])
 
         def merge(n, w):
             """`n` (a copy of the old state, variables written) with the cell writes `w` merged
             into its sorted diff; cells back at their start value leave the diff."""
             if len(n) > NV:
-                d = {(n[p] << 16) | (n[p + 1] << 8) | n[p + 2]: n[p + 3] for p in range(NV, len(n), 4)}
+                d = {e >> 8: e & 255 for e in cell_entries(n[NV:])}
                 d.update(w)
                 del n[NV:]
             else:
@@ -134,7 +140,7 @@ class Emitter:
             for k in sorted(d):
                 v = d[k]
                 if v != S0[k]:
-                    n += ((k << 8) | v).to_bytes(4, "big")
+                    n += pack_entry(k, v)
             return bytes(n)
 
         self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,

@@ -4,8 +4,8 @@ A state is an immutable `bytes`: hashable, compact, cheap to copy (one `bytearra
 Each dynamic attribute of each object gets one byte holding `value - low`; enumerations
 hold their dense index, booleans 0/1. The grid layers that some action can change are
 numbered cell by cell (layer, then z, then x: the "mutable cell index"); a state stores
-only the cells whose value differs from the start's, as 4-byte entries (the index in 3
-bytes big-endian, then the value) sorted by index. So the size of a state grows with
+only the cells whose value differs from the start's, as 4-byte entries, the int
+(index << 8) | value in little-endian order, sorted by index (model.cell_entries). So the size of a state grows with
 what changed, not with the map, and equal worlds give equal bytes. Everything else stays
 in constant tables outside the state. Read states through `Model.view`.
 

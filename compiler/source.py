@@ -17,6 +17,7 @@ from pathlib import Path
 import yaml
 
 from ..errors import BccError, read_input
+from .cache import note_read
 from .limits import MAX_ALIAS_VALUES, MAX_FILE_BYTES, MAX_YAML_DEPTH, int_error, number_error, shorten
 
 
@@ -100,9 +101,11 @@ def _read_source(path: str | Path) -> str:
         with open(path, "rb") as f:
             data = f.read(MAX_FILE_BYTES + 1)
     except (OSError, ValueError):
+        note_read(path, None)    # not a plain file: a load that reads it is not cached
         return read_input(path)  # the same one-line message as every other file bcc reads
     if len(data) > MAX_FILE_BYTES:
         raise BccError(f"the file is larger than {MAX_FILE_BYTES // 2**20} MiB", str(path))
+    note_read(path, data)   # the compiled-dungeon cache keys on every file a load reads
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:

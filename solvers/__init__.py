@@ -9,7 +9,6 @@ that fails to load is reported by name and never breaks the built-ins.
 from __future__ import annotations
 
 import importlib
-from importlib.metadata import entry_points
 
 from ..errors import BccError
 from .base import Budget, Result
@@ -43,6 +42,7 @@ def optimal_cost(model, budget: Budget | None = None) -> int | None:
 
 def _plugins() -> dict:
     try:
+        from importlib.metadata import entry_points   # slow to import: only when plugins are looked up
         return {ep.name: ep for ep in entry_points(group="bcc.solvers")}
     except Exception:  # noqa: BLE001 - a broken installation must not break the built-ins
         return {}

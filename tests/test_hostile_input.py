@@ -184,7 +184,8 @@ def test_an_animal_named_with_code_is_refused_and_never_runs(tmp_path):
 GENERATED_NAME = re.compile(r"(v|_t|T|apply_|why_)\d+\Z")
 ALLOWED_NAMES = {"def", "return", "if", "else", "elif", "not", "and", "or", "in", "for", "None", "True", "False",
                  "pass", "s", "n", "out", "append", "bytes", "bytearray", "range", "any", "all", "successors",
-                 "goal", "failure", "SG", "_cell", "_set_cell", "_index", "_range", "ModelError"}
+                 "goal", "failure", "SG", "_cell", "_set_cell", "_index", "_range", "ModelError",
+                 "c", "w", "_cells", "_merge"}   # compact states: expanded cells, cell writes
 
 
 @pytest.mark.parametrize("name", shipped_dungeons())

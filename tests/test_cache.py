@@ -1,0 +1,91 @@
+"""The on-disk cache of loaded dungeons: hits give the same model, any change to a file
+the load read makes it stale, and an entry never runs code."""
+from __future__ import annotations
+
+import os
+import pickle
+import shutil
+
+import pytest
+
+from bcc.compiler import cache, compile_dungeon
+from bcc.compiler.domain import DOMAINS_DIR
+from bcc.compiler.dungeon import DUNGEONS_DIR
+
+
+@pytest.fixture
+def cache_dir(tmp_path, monkeypatch):
+    folder = tmp_path / "cache"
+    monkeypatch.setenv("BCC_CACHE_DIR", str(folder))
+    monkeypatch.delenv("BCC_NO_CACHE", raising=False)
+    return folder
+
+
+def entries(folder):
+    return sorted((folder / "dungeons").glob("*.pickle")) if (folder / "dungeons").exists() else []
+
+
+def copy_bridge(tmp_path):
+    """bridge.yaml beside its own copy of the minecraft domain (so the test may edit it)."""
+    shutil.copy(DOMAINS_DIR / "minecraft.yaml", tmp_path / "minecraft.yaml")
+    text = (DUNGEONS_DIR / "bridge.yaml").read_text()
+    assert "domain: minecraft" in text
+    path = tmp_path / "bridge.yaml"
+    path.write_text(text.replace("domain: minecraft", f"domain: {tmp_path / 'minecraft.yaml'}"))
+    return path
+
+
+def same_model(a, b):
+    return (a.initial == b.initial and a.action_names == b.action_names and a.source == b.source
+            and a.report == b.report)
+
+
+def test_a_warm_load_gives_the_same_model(cache_dir):
+    cold = compile_dungeon("bridge")
+    assert len(entries(cache_dir)) == 1
+    warm = compile_dungeon("bridge")
+    assert same_model(cold, warm)
+    # A hit does not load again: the entry's value comes back.
+    calls = []
+    assert cache.load_cached(DUNGEONS_DIR / "bridge.yaml", calls.append) is not None and calls == []
+
+
+def test_an_edited_domain_makes_the_entry_stale(cache_dir, tmp_path):
+    path = copy_bridge(tmp_path)
+    first = compile_dungeon(path)
+    domain = tmp_path / "minecraft.yaml"
+    text = domain.read_text()
+    # Rename an action: the cached dungeon must not be used any more.
+    domain.write_text(text.replace("  move_forward:", "  walk_forward:", 1))
+    second = compile_dungeon(path)
+    assert "walk_forward" in second.action_names and "move_forward" in first.action_names
+
+
+def test_a_tampered_entry_never_runs_code(cache_dir, tmp_path):
+    compile_dungeon("bridge")
+    (entry,) = entries(cache_dir)
+    marker = tmp_path / "ran"
+
+    class Evil:
+        def __reduce__(self):
+            return (os.system, (f"touch {marker}",))
+
+    entry.write_bytes(pickle.dumps({"version": cache._version(), "files": [], "value": Evil()}))
+    model = compile_dungeon("bridge")     # the entry is refused, the dungeon loaded again
+    assert not marker.exists()
+    assert model.action_names[0] == "move_forward"
+    with pytest.raises(pickle.UnpicklingError):
+        cache.load_bytes(pickle.dumps(Evil()))
+
+
+def test_the_cache_can_be_turned_off(cache_dir, monkeypatch):
+    monkeypatch.setenv("BCC_NO_CACHE", "1")
+    compile_dungeon("bridge")
+    assert entries(cache_dir) == []
+
+
+def test_xdg_cache_home_is_honoured(tmp_path, monkeypatch):
+    monkeypatch.delenv("BCC_CACHE_DIR", raising=False)
+    monkeypatch.delenv("BCC_NO_CACHE", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert cache.cache_dir() == tmp_path / "xdg" / "bcc"
