@@ -74,6 +74,20 @@ class Result:
         return asdict(self)
 
 
+def _address_space_left(mb: float) -> bool:
+    """Whether the address-space cap (RLIMIT_AS, set by solvers/limits.py) leaves room to
+    grow by `mb`: a growth it refuses is a MemoryError with nothing left to handle it."""
+    try:
+        cap = resource.getrlimit(resource.RLIMIT_AS)[0]
+        if cap == resource.RLIM_INFINITY:
+            return True
+        with open("/proc/self/statm") as f:
+            vm = int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError):
+        return True
+    return vm + mb * 2**20 <= cap
+
+
 def table_growth_mb(stored: int, growth: int, tables: int = 2) -> float:
     """Memory the search's hash tables (a parent map, a cost map) take at once when they
     grow before the next check, else 0. With small states a table's resize is the
@@ -112,8 +126,10 @@ class Meter:
         mb = current_rss_mb()
         self.peak_mb = max(self.peak_mb, mb)
         growth, self.last_stored = stored - self.last_stored, stored
-        if b.max_memory_mb is not None and mb + table_growth_mb(stored, growth) > b.max_memory_mb:
-            return "max_memory"
+        if b.max_memory_mb is not None:
+            reserve = table_growth_mb(stored, growth)
+            if mb + reserve > b.max_memory_mb or not _address_space_left(reserve + 16):
+                return "max_memory"
         if self.progress is not None and now - self.last_report >= 0.5:
             self.last_report = now
             self.progress(expanded=expanded, generated=generated, stored=stored, seconds=now - self.start)
