@@ -125,6 +125,35 @@ def _unavailable() -> str | None:
     return None if available() else INSTALL_HINT
 
 
+class _Expired(Exception):
+    pass
+
+
+def _export_limit(budget):
+    """The export (task.py) has no budget checks of its own: bound it by a timer, unless
+    the command already runs under one (solvers/limits.py's hard_limits), which it
+    would cancel."""
+    import contextlib
+    import signal
+    import threading
+    if budget.time_limit is None or threading.current_thread() is not threading.main_thread() \
+            or signal.getitimer(signal.ITIMER_REAL)[0] > 0:
+        return contextlib.nullcontext()
+
+    @contextlib.contextmanager
+    def limit():
+        def expire(signum, frame):
+            raise _Expired()
+        old = signal.signal(signal.SIGALRM, expire)
+        signal.setitimer(signal.ITIMER_REAL, budget.time_limit)
+        try:
+            yield
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, old)
+    return limit()
+
+
 @declare(Option("fd_search", str, DEFAULT_SEARCH, "the Fast Downward search configuration", keyword="search"),
          optimal=True, unavailable=_unavailable)
 def solve(model, budget, progress=None, search: str | None = None, **_):
@@ -140,7 +169,12 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
     files = model.data("pddl_files")
     if files is not None:
         return _solve_files(model, budget, files, search, start)
-    task = build_task(model)
+    try:
+        with _export_limit(budget):
+            task = build_task(model)
+    except _Expired:
+        return Result(solver="fd", solved=False, status="budget", seconds=round(time.perf_counter() - start, 6), budget="time_limit",
+                      message="stopped: the time limit (--time-limit) ran out while exporting the model to PDDL")
     with tempfile.TemporaryDirectory(prefix="bcc-pddl-") as tmp:
         dom, prob = os.path.join(tmp, "domain.pddl"), os.path.join(tmp, "problem.pddl")
         write_text(dom, domain_text(task))
