@@ -98,6 +98,12 @@ def fd_cost(stdout: str) -> int | None:
     return None
 
 
+def fd_peak_mb(stdout: str) -> float | None:
+    """The search's `Peak memory: N KB` (Fast Downward's own report; the translator's is lower)."""
+    peaks = [int(line.split(":", 1)[1].split()[0]) for line in stdout.splitlines() if "Peak memory:" in line]
+    return round(max(peaks) / 1024, 1) if peaks else None
+
+
 def bench_case(label: str, dungeon: str, work: Path, time_limit: float, fd: Path | None) -> dict:
     bcc = [sys.executable, "-m", "bcc"]
     env = dict(os.environ, BCC_CACHE_DIR=str(work / f"cache-{label}"))
@@ -112,7 +118,8 @@ def bench_case(label: str, dungeon: str, work: Path, time_limit: float, fd: Path
             data = json.loads(r["stdout"])
         except ValueError:
             data = {}
-        row[name] = {"wall": r["wall"], "peak_mb": r["peak_mb"], "cost": data.get("cost"),
+        # the process's own peak (ru_maxrss of a child also counts the parent's at fork)
+        row[name] = {"wall": r["wall"], "peak_mb": data.get("peak_mb"), "cost": data.get("cost"),
                      "expanded": data.get("expanded"), "stored": data.get("stored"),
                      "search_seconds": data.get("seconds"), "status": data.get("status", f"exit {r['code']}")}
     if fd is not None:
@@ -124,7 +131,7 @@ def bench_case(label: str, dungeon: str, work: Path, time_limit: float, fd: Path
                 r = peak_of([sys.executable, str(fd), "--plan-file", str(plan), "--overall-time-limit",
                              f"{int(time_limit)}s", str(pddl / "domain.pddl"), str(pddl / "problem.pddl"),
                              "--search", search], timeout=time_limit + 60)
-                row[name] = {"wall": r["wall"], "peak_mb": r["peak_mb"], "cost": fd_cost(r["stdout"]),
+                row[name] = {"wall": r["wall"], "peak_mb": fd_peak_mb(r["stdout"]), "cost": fd_cost(r["stdout"]),
                              "status": "solved" if r["code"] == 0 else f"exit {r['code']}"}
         else:
             row["fd_error"] = exported["stderr"].strip().splitlines()[-1:] or ["export failed"]
@@ -162,11 +169,11 @@ def main() -> None:
             rows.append(row)
             sb = row["state_bytes"]
             fdb, fdl = row.get("fd_blind", {}), row.get("fd_lmcut", {})
-            fd_mb = min([r["peak_mb"] for r in (fdb, fdl) if r], default=None)
+            fd_mb = min([r["peak_mb"] for r in (fdb, fdl) if r and r["peak_mb"] is not None], default=None)
             print(f"{label:<24}{sb['typical']:>12}{row['bcc_cold']['wall']:>10.2f}{row['bcc_warm']['wall']:>8.2f}"
                   f"{row['bcc_blind']['wall']:>8.2f}{fdb.get('wall', float('nan')):>10.2f}"
                   f"{fdl.get('wall', float('nan')):>10.2f}{row.get('ratio_bcc_warm', float('nan')):>7.2f}"
-                  f"{row['bcc_warm']['peak_mb']:>8.0f}{fd_mb if fd_mb is not None else float('nan'):>7.0f}"
+                  f"{row['bcc_warm']['peak_mb'] or float('nan'):>8.0f}{fd_mb if fd_mb is not None else float('nan'):>7.0f}"
                   f"{str(row['bcc_warm']['cost']):>6}{'' if row['costs_agree'] else '  COSTS DIFFER'}", flush=True)
     data = {"machine": {"python": platform.python_version(), "platform": platform.platform(),
                         "cpus": os.cpu_count(), "load": os.getloadavg()},
