@@ -9,10 +9,12 @@ so on big mazes with many stones the independent reference is the search that do
 finish. The test also counts how many mazes had a reference that does not use the
 pattern database at all (BFS, blind or manhattan), so it cannot silently lose its teeth.
 
-The unmarked part is a quick subset; `-m slow` runs the 200+ mazes.
+The unmarked part is a quick subset; `-m slow` runs 60 more (BCC_DIFFERENTIAL_MAZES=210:
+the issue's 200+ over the whole range).
 """
 from __future__ import annotations
 
+import os
 import random
 
 import pytest
@@ -93,7 +95,11 @@ def test_quick_subset_agrees(tmp_path):
     assert independent == len(cases)
 
 
-SLOW_CASES = maze_cases(210, seed=7)
+# CI runs 60 mazes of widths 11-31 with 0-6 stones (minutes); BCC_DIFFERENTIAL_MAZES=210
+# runs the issue's full range (widths 11-51, 0-12 stones, the corners pinned), which takes
+# hours on two cores: A* with the pattern database alone needs minutes on the big ones.
+FULL = int(os.environ.get("BCC_DIFFERENTIAL_MAZES", "0"))
+SLOW_CASES = maze_cases(FULL, seed=7) if FULL else maze_cases(60, seed=7, widest=31, most_stones=6, corners=False)
 CHUNK = 30
 
 
