@@ -23,15 +23,14 @@ weight(t) P(t | command) -- EM's objective, differentiated directly.
 """
 from __future__ import annotations
 
-import json
 import math
 import re
 from collections import Counter
-from pathlib import Path
 
 import numpy as np
 
-from ..errors import BccError, read_input
+from ..errors import BccError
+from .model_file import JsonModelFile
 from .text import Speller, words
 
 FORMAT = "bcc-loglinear/1"
@@ -89,7 +88,7 @@ class _Segments:
         return out
 
 
-class LogLinear:
+class LogLinear(JsonModelFile):
     """The trained model: feature indices, the weight matrix and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
@@ -214,18 +213,6 @@ class LogLinear:
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed grounding model: {exc}", path) from None
 
-    def save(self, path: str | Path) -> None:
-        from ..atomic import write_text
-        write_text(path, json.dumps(self.to_json(), separators=(",", ":")) + "\n")
-
-    @classmethod
-    def load(cls, path: str | Path) -> LogLinear:
-        text = read_input(path, "model")
-        try:
-            data = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise BccError(f"invalid JSON: {exc.msg}", str(path), exc.lineno, exc.colno) from None
-        return cls.from_json(data, str(path))
 
 
 __all__ = ["LogLinear", "words", "task_features", "command_features"]

@@ -17,13 +17,12 @@ interpolated with the uniform alignment 1 / (l + 1).
 """
 from __future__ import annotations
 
-import json
 import math
 import re
 from collections import defaultdict
-from pathlib import Path
 
-from ..errors import BccError, read_input
+from ..errors import BccError
+from .model_file import JsonModelFile
 
 NULL = "<null>"
 FORMAT = "bcc-ibm2/1"
@@ -38,7 +37,7 @@ def words(command: str) -> list[str]:
     return WORD.findall(command.lower())
 
 
-class IBMModel2:
+class IBMModel2(JsonModelFile):
     def __init__(self, t: dict | None = None, a: dict | None = None, vocabulary=None, f_counts=None,
                  a_counts=None, pairs: int = 0, iterations: int = 0, templates: dict | None = None):
         self.t = t or {}                       # token -> {word: count}  (expected counts)
@@ -167,15 +166,3 @@ class IBMModel2:
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed translation model: {exc}", path) from None
 
-    def save(self, path: str | Path) -> None:
-        from ..atomic import write_text
-        write_text(path, json.dumps(self.to_json(), separators=(",", ":")) + "\n")
-
-    @classmethod
-    def load(cls, path: str | Path) -> IBMModel2:
-        text = read_input(path, "model")
-        try:
-            data = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise BccError(f"invalid JSON: {exc.msg}", str(path), exc.lineno, exc.colno) from None
-        return cls.from_json(data, str(path))
