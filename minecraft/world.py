@@ -102,12 +102,12 @@ class WorldMap:
                 if not (0 <= tx < g.width and 0 <= tz < g.depth):
                     continue
                 for slot in slots:
-                    probe = bytearray(m.initial)
+                    probe = bytearray(m.dense(m.initial))  # the dense layout: every mutable cell has a place
                     probe[index["agent.rotationalDirection"].index] = d - index["agent.rotationalDirection"].lo
                     probe[index["agent.verticalDirection"].index] = 1 - index["agent.verticalDirection"].lo
                     probe[index["agent.selectedItem"].index] = slot - index["agent.selectedItem"].lo
                     probe[g.base + g.layers.index(y) * area + tz * g.width + tx] = t
-                    if m.apply(destroy, bytes(probe)) is not None:
+                    if m.apply(destroy, m.compact(bytes(probe))) is not None:
                         found.add(g.value_names[t])
         return sorted(minecraft_name(n) for n in found)
 
@@ -147,7 +147,7 @@ class WorldMap:
         if not (0 <= x < g.width and 0 <= z < g.depth):
             raise BccError(f"the player is outside the dungeon, at world ({px:.1f}, {py:.1f}, {pz:.1f})")
         palette, cells = obs["palette"], obs["cells"]
-        state = bytearray(m.initial)
+        state = bytearray(m.dense(m.initial))  # the dense layout (variables first, then every mutable cell)
         area = g.width * g.depth
         for yy in range(g.height):
             for zz in range(g.depth):
@@ -168,7 +168,7 @@ class WorldMap:
         if off > 30:
             notes.append(f"yaw {yaw:.0f} is {off:.0f} degrees from a facing: read as {facing * 90}")
         down = 1 if obs["pitch"] >= DOWN_THRESHOLD else 0
-        under = g.value_names[g.cell(bytes(state), x, y - 1, z)]
+        under = g.value_names[g.cell(m.compact(bytes(state)), x, y - 1, z)]
         # The server applies no lava damage: the parser does. Standing on (or sunk into)
         # lava is death in bcc's rules, as is having dropped below the floor.
         alive = under != "lava" and feet > y - 0.5
@@ -199,7 +199,7 @@ class WorldMap:
                     notes.append(f"{v.label} = {raw} is outside [{v.lo}, {v.hi}]: clipped")
                     raw = min(max(raw, v.lo), v.hi)
                 state[v.index] = raw - v.lo
-        return Parsed(bytes(state), notes, on_floor=abs(feet - y) <= 0.05 and bool(obs.get("onGround", True)))
+        return Parsed(m.compact(bytes(state)), notes, on_floor=abs(feet - y) <= 0.05 and bool(obs.get("onGround", True)))
 
 
 @dataclass(frozen=True)
