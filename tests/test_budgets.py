@@ -59,8 +59,8 @@ def test_learning_solvers_and_their_reference_search_share_the_time_limit(solver
     code, data, wall, _ = run("solve", big_maze, "--solver", solver, "--time-limit", "2", "--max-memory", "1000",
                               "--json")
     assert wall <= startup + 2 + 1.5, f"{solver}: {wall:.1f} s for --time-limit 2"
-    if not data["solved"]:
-        assert data["status"] == "budget" and data["budget"] in ("time_limit", "max_memory")
+    if data["status"] == "budget":  # else its episodes ended within the limit, solved or not
+        assert data["budget"] in ("time_limit", "max_memory")
 
 
 def test_building_the_pattern_database_stops_at_the_time_limit(big_maze, startup):
