@@ -89,18 +89,29 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
                      f"Fast Downward failed (exit {proc.returncode}): {' | '.join(tail)}")
 
 
+def _time_left(budget, start: float) -> float | None:
+    """What remains of the time limit for Fast Downward's own (at least 1 s)."""
+    return None if budget.time_limit is None else max(1.0, budget.time_limit - (time.perf_counter() - start))
+
+
+def _unsolved(fd, seconds: float):
+    """The Result of a run that found no plan; a BccError when Fast Downward failed."""
+    from ..solvers.base import Result
+    if fd.status == "error":
+        raise BccError(fd.message)
+    return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
+                  budget="time_limit" if fd.status == "budget" else None)
+
+
 def _solve_files(model, budget, files, search, start):
     """A model imported from PDDL: Fast Downward reads the very files bcc read, and its
     plan's steps are the model's action names (`(pick ball1 rooma left)`)."""
     from ..solvers.base import Result
-    left = None if budget.time_limit is None else max(1.0, budget.time_limit - (time.perf_counter() - start))
+    left = _time_left(budget, start)
     fd = run(files[0], files[1], search, left, budget.max_memory_mb, full_names=True)
     seconds = round(time.perf_counter() - start, 6)
-    if fd.status == "error":
-        raise BccError(fd.message)
     if not fd.solved:
-        return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
-                      budget="time_limit" if fd.status == "budget" else None)
+        return _unsolved(fd, seconds)
     costs = dict(zip(model.action_names, model.action_costs))
     known = all(a in costs for a in fd.plan)
     cost = sum(costs[a] for a in fd.plan) if known else fd.cost
@@ -179,14 +190,11 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
         dom, prob = os.path.join(tmp, "domain.pddl"), os.path.join(tmp, "problem.pddl")
         write_text(dom, domain_text(task))
         write_text(prob, problem_text(task))
-        left = None if budget.time_limit is None else max(1.0, budget.time_limit - (time.perf_counter() - start))
+        left = _time_left(budget, start)
         fd = run(dom, prob, search, left, budget.max_memory_mb)
     seconds = round(time.perf_counter() - start, 6)
-    if fd.status == "error":
-        raise BccError(fd.message)
     if not fd.solved:
-        return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
-                      budget="time_limit" if fd.status == "budget" else None)
+        return _unsolved(fd, seconds)
     plan = [a for a in (task.action_of(op) for op in fd.plan) if a is not None]
     cost = sum(model.action_costs[model.action_index(a)] for a in plan)
     return Result(solver="fd", solved=True, status="solved", plan=plan, cost=cost, seconds=seconds,
