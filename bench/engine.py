@@ -51,7 +51,8 @@ def run(cmd: list, env: dict | None = None, timeout: float = 600) -> dict:
 
 
 def peak_of(cmd: list, env: dict | None = None, timeout: float = 600) -> dict:
-    """`run`, with the child's peak memory from wait4 (Linux: ru_maxrss in KiB)."""
+    """`run`, with wait4's peak of the child (ru_maxrss: an upper bound, since it starts
+    from this process's size at fork; the rows use the peak the child reports itself)."""
     start = time.perf_counter()
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
     out_chunks = []

@@ -14,7 +14,7 @@ import resource
 
 from ..errors import BccError, ModelError
 from ..solvers import LEARNING, Budget, get_solver, optimal_cost
-from ..solvers.base import current_rss_mb
+from ..solvers.memory import current_rss_mb
 from ..solvers.limits import Deadline
 from .posted import DungeonRef, compile_ref, public_error
 # Imported here so the fork server preloads them: a job never pays for these imports.

@@ -5,37 +5,14 @@ budget ends the run cleanly with `status="budget"` and `budget` naming which one
 """
 from __future__ import annotations
 
-import os
-import resource
 import time
 from dataclasses import asdict, dataclass, field
 from typing import Callable
 
 from ..model import Model
+from .memory import address_space_left, current_rss_mb, peak_rss_mb, physical_memory_mb, reanchor_cap
 
 CHECK_EVERY = 1024  # expansions between time/memory checks
-
-
-def physical_memory_mb() -> float:
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**20
-    except (ValueError, OSError, AttributeError):
-        return 8192.0
-
-
-def current_rss_mb() -> float:
-    """Resident memory now (Linux /proc), else the peak so far."""
-    try:
-        with open("/proc/self/statm") as f:
-            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
-    except OSError:
-        return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-
-
-def peak_rss_mb() -> float:
-    """The process's peak resident memory so far (Linux reports ru_maxrss in KiB): the
-    `peak_mb` of a result, which a sampled maximum would understate."""
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
 @dataclass(frozen=True)
@@ -72,20 +49,6 @@ class Result:
 
     def to_json(self) -> dict:
         return asdict(self)
-
-
-def _address_space_left(mb: float) -> bool:
-    """Whether the address-space cap (RLIMIT_AS, set by solvers/limits.py) leaves room to
-    grow by `mb`: a growth it refuses is a MemoryError with nothing left to handle it."""
-    try:
-        cap = resource.getrlimit(resource.RLIMIT_AS)[0]
-        if cap == resource.RLIM_INFINITY:
-            return True
-        with open("/proc/self/statm") as f:
-            vm = int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
-    except (OSError, ValueError):
-        return True
-    return vm + mb * 2**20 <= cap
 
 
 def table_growth_mb(stored: int, growth: int, tables: int = 2) -> float:
@@ -127,8 +90,9 @@ class Meter:
         self.peak_mb = max(self.peak_mb, mb)
         growth, self.last_stored = stored - self.last_stored, stored
         if b.max_memory_mb is not None:
+            reanchor_cap()
             reserve = table_growth_mb(stored, growth)
-            if mb + reserve > b.max_memory_mb or not _address_space_left(reserve + 16):
+            if mb + reserve > b.max_memory_mb or not address_space_left(reserve + 16):
                 return "max_memory"
         if self.progress is not None and now - self.last_report >= 0.5:
             self.last_report = now

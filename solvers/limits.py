@@ -12,13 +12,12 @@ budget stop (exit 1). `Deadline` splits one command's time between its phases.
 from __future__ import annotations
 
 import contextlib
-import os
-import resource
 import signal
 import threading
 import time
 
-from .base import BUDGET_WORDS, Budget, Result, current_rss_mb, peak_rss_mb
+from .base import BUDGET_WORDS, Budget, Result
+from .memory import arm_cap, disarm_cap, peak_rss_mb
 
 GRACE_SECONDS = 0.5   # the cooperative check normally stops first; the timer only backs it up
 
@@ -31,14 +30,6 @@ class BudgetExceeded(Exception):
         self.which = which
 
 
-def _vm_bytes() -> int | None:
-    try:
-        with open("/proc/self/statm") as f:
-            return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
-    except (OSError, ValueError):
-        return None
-
-
 @contextlib.contextmanager
 def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
     """Enforce `budget`'s time and memory on everything run inside (main thread only;
@@ -49,21 +40,7 @@ def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
             raise BudgetExceeded("time_limit")
         old_handler = signal.signal(signal.SIGALRM, expire)
         signal.setitimer(signal.ITIMER_REAL, budget.time_limit + grace)
-    old_cap = None
-    vm = _vm_bytes()
-    if budget.max_memory_mb is not None and vm is not None:
-        # What the budget still allows this process to grow by. New memory is new address
-        # space (a dict doubling its table, a numpy array), so capping the growth of the
-        # address space caps the growth of resident memory, give or take pages already
-        # mapped but not yet touched.
-        room = max(budget.max_memory_mb - current_rss_mb(), 1)
-        cap = vm + int(room * 2**20)
-        try:
-            old_cap = resource.getrlimit(resource.RLIMIT_AS)
-            hard = old_cap[1]
-            resource.setrlimit(resource.RLIMIT_AS, (cap if hard == resource.RLIM_INFINITY else min(cap, hard), hard))
-        except (OSError, ValueError):
-            old_cap = None
+    old_cap = arm_cap(budget.max_memory_mb) if budget.max_memory_mb is not None else None
     try:
         yield
     except MemoryError:
@@ -73,8 +50,7 @@ def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, old_handler)
         if old_cap is not None:
-            with contextlib.suppress(OSError, ValueError):
-                resource.setrlimit(resource.RLIMIT_AS, old_cap)
+            disarm_cap(old_cap)
 
 
 class Deadline:

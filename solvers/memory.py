@@ -1,0 +1,118 @@
+"""Memory probes and the address-space cap that makes a memory budget hard.
+
+A memory budget is about resident memory, but the kernel can only cap address space
+(RLIMIT_AS). The two differ by mappings that are not resident -- shared libraries
+imported after the cap was set, reserved but untouched pages -- so the cap is anchored
+to the address space *now* plus what the budget still allows resident memory to grow by,
+and re-anchored at each budget check of a search: imports and compiling before the
+search then never count against it, and between two checks the process can grow by no
+more than the budget left.
+"""
+from __future__ import annotations
+
+import os
+import resource
+
+_PAGE = os.sysconf("SC_PAGE_SIZE") if hasattr(os, "sysconf") else 4096
+_budget_mb: float | None = None   # the memory budget the cap enforces, while one is armed
+
+
+def physical_memory_mb() -> float:
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**20
+    except (ValueError, OSError, AttributeError):
+        return 8192.0
+
+
+def _statm() -> tuple[int, int] | None:
+    """(address space, resident) in bytes, from Linux /proc."""
+    try:
+        with open("/proc/self/statm") as f:
+            fields = f.read().split()
+        return int(fields[0]) * _PAGE, int(fields[1]) * _PAGE
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def current_rss_mb() -> float:
+    """Resident memory now (Linux /proc), else the peak so far."""
+    statm = _statm()
+    if statm is None:
+        return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    return statm[1] / 2**20
+
+
+def peak_rss_mb() -> float:
+    """The process's peak resident memory so far: the `peak_mb` of a result, which a
+    sampled maximum would understate. Linux's VmHWM is this process's own high-water
+    mark; ru_maxrss is not, since it starts from the parent's resident size at fork (a
+    solve started by a 400 MB process would report 400 MB), so it is only the fallback."""
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) / 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def _set_cap() -> None:
+    statm = _statm()
+    if statm is None or _budget_mb is None:
+        return
+    vm, rss = statm
+    room = max(_budget_mb * 2**20 - rss, 2**20)
+    hard = resource.getrlimit(resource.RLIMIT_AS)[1]
+    cap = int(vm + room)
+    resource.setrlimit(resource.RLIMIT_AS, (cap if hard == resource.RLIM_INFINITY else min(cap, hard), hard))
+
+
+def arm_cap(max_memory_mb: float):
+    """Cap the address space for `max_memory_mb` of resident memory; returns what
+    `disarm_cap` restores, or None when this system has no cap to set."""
+    global _budget_mb
+    outer = _budget_mb
+    try:
+        old = resource.getrlimit(resource.RLIMIT_AS)
+        _budget_mb = max_memory_mb if outer is None else min(outer, max_memory_mb)
+        _set_cap()
+    except (OSError, ValueError):
+        _budget_mb = outer
+        return None
+    return old, outer
+
+
+def disarm_cap(armed) -> None:
+    """Undo `arm_cap` (nested caps restore the outer one)."""
+    global _budget_mb
+    if armed is None:
+        return
+    old, _budget_mb = armed
+    try:
+        resource.setrlimit(resource.RLIMIT_AS, old)
+    except (OSError, ValueError):
+        pass
+
+
+def reanchor_cap() -> None:
+    """Move an armed cap to the address space now plus the budget left (a search's
+    budget check calls this, so mappings added since the last check do not count)."""
+    if _budget_mb is not None:
+        try:
+            _set_cap()
+        except (OSError, ValueError):
+            pass
+
+
+def address_space_left(mb: float) -> bool:
+    """Whether the cap leaves room to grow by `mb`: a growth it refuses is a MemoryError
+    with nothing left to handle it."""
+    try:
+        cap = resource.getrlimit(resource.RLIMIT_AS)[0]
+    except (OSError, ValueError):
+        return True
+    statm = _statm()
+    if cap == resource.RLIM_INFINITY or statm is None:
+        return True
+    return statm[0] + mb * 2**20 <= cap
