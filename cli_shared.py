@@ -113,10 +113,14 @@ def _flag_help(name: str) -> str:
     return f"{', '.join(s for s, _ in uses)}: {first.help}; {what} [default: {defaults}]"
 
 
-def solver_flags(command):
+def solver_flags(command=None, *, skip: tuple = ()):
     """The SOLVER_FLAGS and `-O NAME=VALUE` (any declared option, e.g. a plugin's) on a
-    command; it receives them as `opt_NAME` and `extra_options`. See `solver_request`."""
-    for name in reversed(SOLVER_FLAGS):
+    command; it receives them as `opt_NAME` and `extra_options`. See `solver_request`.
+    `skip` leaves out flags a command already has in another sense (`bcc minecraft run`'s
+    --max-steps counts actions in the world); those options stay reachable with -O."""
+    if command is None:
+        return lambda c: solver_flags(c, skip=skip)
+    for name in reversed([n for n in SOLVER_FLAGS if n not in skip]):
         command = click.option(flag(name), "opt_" + name, cls=SolverFlag, default=None,
                                metavar=name.upper().replace("_", "-") if name != "fd_search" else "CONFIG")(command)
     return click.option("-O", "--option", "extra_options", multiple=True, metavar="NAME=VALUE",

@@ -5,7 +5,7 @@ import sys
 
 import click
 
-from ..cli_shared import emit_json, goal_option, json_option
+from ..cli_shared import emit_json, goal_option, json_option, solver_flags, solver_request
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -49,8 +49,9 @@ def batch_group():
 @goal_option
 @click.option("--out", required=True, type=click.Path(dir_okay=False), help="The results file (JSON Lines); runs already in it are skipped.")
 @json_option
+@solver_flags
 def run_cmd(dungeons, sweep_path, solvers, seeds, backend, workers, address, time_limit, max_states, max_memory,
-            goal, out, as_json):
+            goal, out, as_json, **solver_options):
     """Solve every DUNGEON x solver x seed; append one JSON row per run to --out.
 
     A DUNGEON is a file, a shipped name, a glob ('mazes/*.yaml') or a generator spec
@@ -67,6 +68,9 @@ def run_cmd(dungeons, sweep_path, solvers, seeds, backend, workers, address, tim
         raise BccError("no dungeons: give DUNGEON arguments or a --sweep file with `dungeons`")
     settings = [s for name in solvers for s in expand_setting(name, {})] if solvers else sweep.settings
     settings = settings or expand_setting("astar", {})
+    # the command line's solver options, checked for each solver, over the sweep's own
+    settings = [(solver, {**options, **solver_request(solver, dict(solver_options))}, limits)
+                for solver, options, limits in settings]
     budget = dict(sweep.budget)
     budget.update(check_limits({"time_limit": time_limit, "max_states": max_states, "max_memory": max_memory}))
     settings = [(solver, options, {**budget, **limits}) for solver, options, limits in settings]

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import click
 
-from ..cli_shared import compile_model, emit_json, goal_option, json_option
+from ..cli_shared import compile_model, emit_json, goal_option, json_option, solver_flags, solver_request
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -105,7 +105,8 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
 @click.option("--watch", type=click.FloatRange(min=0), default=0.0, metavar="SECONDS",
               help="Wait up to SECONDS for a person to join and watch; the bot then pauses between actions.")
 @json_option
-def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json):
+@solver_flags(skip=("max_steps",))
+def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json, **solver_options):
     """Solve DUNGEON, then let a bot execute the plan in a real Minecraft server.
 
     Each step prints the model's prediction and the state parsed from the world; on a
@@ -114,12 +115,13 @@ def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json):
     """
     from ..solvers import Budget, get_solver
     from .run import run_dungeon
-    get_solver(solver)   # an unknown solver is bad input, before starting anything
+    get_solver(solver)   # an unknown solver or option is bad input, before starting anything
+    options = solver_request(solver, solver_options)
     model = compile_model(dungeon, goal)
     budget = Budget(time_limit=time_limit, max_memory_mb=Budget.default().max_memory_mb)
     out = (lambda line: click.echo(line, err=True)) if as_json else click.echo
     result = run_dungeon(model, port, solver=solver, budget=budget, log=out, log_path=_log_path(port),
-                         max_steps=max_steps, watch=watch)
+                         max_steps=max_steps, watch=watch, solver_options=options)
     data = result.to_json(model)
     if as_json:
         emit_json(data)

@@ -64,12 +64,16 @@ class RunResult:
         }
 
 
-def solve_from(model: Model, state: bytes, solver: str, budget: Budget, replanning: bool):
-    """A plan from `state` (the compiled model with its start moved there)."""
+def solve_from(model: Model, state: bytes, solver: str, budget: Budget, replanning: bool,
+               solver_options: dict | None = None):
+    """A plan from `state` (the compiled model with its start moved there), with the
+    user's checked `solver_options`."""
     solve = get_solver(solver)
-    # replanning must be quick: the cheap heuristic, for the solvers that take one
+    options = dict(solver_options or {})
+    # replanning must be quick: the cheap heuristic, for the solvers that take one, unless the user chose
     informed = any(o.name == "heuristic" for o in options_of(solve))
-    options = check_options(solver, {"heuristic": "manhattan"}) if replanning and informed else {}
+    if replanning and informed and "heuristic" not in options:
+        options.update(check_options(solver, {"heuristic": "manhattan"}))
     return solve(dataclasses.replace(model, initial=state), budget, **options)
 
 
@@ -86,6 +90,7 @@ def observe_state(bridge: Bridge, world: WorldMap, player: str):
 
 
 def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | None = None,
+        solver_options: dict | None = None,
         player: str = BOT, max_steps: int = 200, max_replans: int = 5, delay: float = 0.0,
         log: Callable[[str], None] = lambda line: None,
         after_step: Callable[[int, Bridge], None] | None = None) -> RunResult:
@@ -119,7 +124,8 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
             if len(result.plans) > max_replans:
                 result.status, result.message = "diverged", f"the world diverged {max_replans} times; giving up"
                 break
-            res = solve_from(model, state, solver, budget, replanning=bool(result.plans))
+            res = solve_from(model, state, solver, budget, replanning=bool(result.plans),
+                             solver_options=solver_options)
             result.plans.append({"from_step": step, "plan": list(res.plan), "seconds": round(res.seconds, 3),
                                  "solved": res.solved})
             if not res.solved:

@@ -2,7 +2,8 @@
 
 Optimal with an admissible heuristic. Only the current path is checked for cycles, so
 transpositions are searched again: slower than A* where A* fits in memory, but it never
-runs out of it. `stored` reports the deepest path.
+runs out of it. `stored` reports the deepest path; since that stays small, the state
+budget (--max-states) bounds the states it expands instead.
 """
 from __future__ import annotations
 
@@ -25,6 +26,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
     h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
     costs, successors, is_goal, is_failure = model.action_costs, model.successors, model.is_goal, model.is_failure
     start = model.initial
+    max_states = budget.max_states
     counters = {"expanded": 0, "generated": 0, "depth": 0}
     path_states, path_actions = [start], []
     on_path = {start}
@@ -36,6 +38,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
         if is_goal(state):
             return True
         counters["expanded"] += 1
+        if max_states is not None and counters["expanded"] > max_states:
+            raise _Stop("max_states")
         if counters["expanded"] % CHECK_EVERY == 0:
             which = meter.check(counters["expanded"], counters["generated"], len(path_states))
             if which:

@@ -379,3 +379,18 @@ def test_progress_bar_counts_done_failed_rate_and_eta():
     half = ProgressBar(4, stream=io.StringIO(), enabled=False)
     half.done = 2                       # 2 runs in 30 s: 2 more take 30 s
     assert "2/4 done, 0 failed, 0.07 runs/s, ETA 00:30" in half.line(30.0)
+
+
+def test_command_line_solver_options_apply_to_every_solver_and_are_checked(tmp_path):
+    out = tmp_path / "r.jsonl"
+    result = bcc("batch", "grid", "--solver", "astar", "--solver", "gbfs", "--heuristic", "manhattan",
+                 "--out", str(out))
+    assert result.exit_code == 0, result.output
+    rows = rows_in(out)
+    assert sorted(r["solver"] for r in rows) == ["astar", "gbfs"]
+    assert all(r["options"] == {"heuristic": "manhattan"} and r["heuristic"] == "manhattan" for r in rows)
+    # an option one of the solvers does not take is bad input, before anything runs
+    refused = bcc("batch", "grid", "--solver", "astar", "--solver", "bfs", "--heuristic", "manhattan",
+                  "--out", str(tmp_path / "none.jsonl"))
+    assert refused.exit_code == 2 and "--heuristic does not apply to bfs" in refused.output
+    assert not (tmp_path / "none.jsonl").exists()

@@ -279,3 +279,19 @@ def test_store_adds_the_pair_with_bcc_learn(tmp_path, model_of):
     idle = from_actions(m, [], command="stay")
     info = store(idle, tmp_path / "idle.json", db=db)
     assert not info["stored"] and "not stored" in info["message"]
+
+
+def test_run_takes_the_solver_options_and_checks_them_before_starting(model_of):
+    from bcc.minecraft.run import solve_from
+    from bcc.solvers import Budget
+    model = model_of("bridge")
+    chosen = solve_from(model, model.initial, "astar", Budget(time_limit=30), replanning=True,
+                        solver_options={"heuristic": "blind"})
+    assert chosen.solved and chosen.heuristic == "blind"          # the user's choice, even when replanning
+    quick = solve_from(model, model.initial, "astar", Budget(time_limit=30), replanning=True)
+    assert quick.heuristic == "manhattan" and quick.cost == chosen.cost   # the cheap default for replans
+    bad = CliRunner().invoke(main, ["minecraft", "run", "bridge", "--heuristic", "nope"])
+    assert bad.exit_code == 2 and "--heuristic must be one of" in bad.output
+    # the run's own --max-steps (actions in the world) is one option, not a solver flag's duplicate
+    params = [p for p in main.commands["minecraft"].commands["run"].params if "--max-steps" in p.opts]
+    assert len(params) == 1

@@ -122,3 +122,11 @@ def test_every_builtin_option_is_a_field_of_post_solve(name):
     fields = option_fields(SolveRequest)
     for option in options_of(get_solver(name)):
         assert option.name in fields, f"{name}: POST /solve has no field {option.name!r}"
+
+
+def test_idastar_state_budget_bounds_what_it_expands():
+    """IDA* keeps only its path, so --max-states bounds the states it expands: without
+    that, a state budget never stopped it (the tough maze needs far more than 300)."""
+    result = runnable("idastar")(compiled("tough_maze"), Budget(max_states=300, time_limit=60))
+    assert result.status == "budget" and result.budget == "max_states", result
+    assert result.expanded == 301
