@@ -15,14 +15,14 @@ want it (`Model.dense`, and the PDDL export's symbolic run of the dense function
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from ..errors import BccError
 from . import ir
-from .dungeon import Dungeon
-from .ground import Grounder
-from .source import error_at
+
+if TYPE_CHECKING:   # the YAML front-end: not loaded by `bcc import pddl`, which only needs Layout
+    from .dungeon import Dungeon
+    from .ground import Grounder
 
 
 @dataclass(frozen=True)
@@ -83,6 +83,7 @@ class Layout:
             if not slot.lo <= int(value) <= slot.hi:
                 where = d.where.get((slot.var.owner, slot.var.attr))
                 message = f"{slot.var.label} = {value} is outside its range [{slot.lo}, {slot.hi}]"
+                from .source import error_at
                 raise error_at(*where, message) if where else BccError(message, d.path)
             out[slot.index] = int(value) - slot.lo
         return bytes(out)
@@ -120,6 +121,7 @@ def make_layout(grounder: Grounder, d: Dungeon, dynamic: set, grid_layers: set[i
                 for a in attrs:
                     add(name, cname, a)
     layers = tuple(sorted(range(d.height) if grid_layers is None else grid_layers))
+    import numpy as np
     default = int(np.uint8(grounder.value_const(d.grid_class, _value_attr(d), _default(d)).value))
     return Layout(slots, {s.var: s for s in slots}, keyed, d.width, d.depth, d.height, len(slots), layers,
                   d.grid.tobytes(), default)

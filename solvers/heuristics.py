@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from ..model import Model
 
 
@@ -29,6 +27,7 @@ def manhattan(model: Model):
     if len(goals) == 0:
         return lambda state: math.inf  # the goal holds at no position: nothing can reach it
     # One table over the dynamic axes' ranges: h = table[flattened position].
+    import numpy as np   # here, not at the top: models with no grid (PDDL) never load it
     by_index = {v.index: v for v in model.variables}
     ranges = [(index, lo, by_index[index].hi - lo + 1) for _, (index, lo) in dyn]
     grids = np.meshgrid(*[np.arange(lo, lo + n) for _, lo, n in ranges], indexing="ij")

@@ -1,0 +1,299 @@
+"""Compile a dungeon (and its domain) into a `Model`: load -> ground -> lay out -> emit.
+
+The package's entry points (bcc.compiler.compile_dungeon, ...) live here; compiler/__init__.py
+loads this module on first use.
+
+    model = compile_dungeon("bridge")                 # a shipped name or a path
+    model = compile_dungeon("four_rooms", goal="agentInRoom(agent, red)")
+"""
+from __future__ import annotations
+
+import functools
+import itertools
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import BccError
+from ..model import Grid, Model, Variable
+from . import ir
+from . import patterns, relaxed
+from .abstract import Abstract, maybe_true
+from .domain import Expr, load_domain
+from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
+from .emit import Emitter, GroundAction
+from .ground import Ctx, Grounder, check_nesting
+from .layout import make_layout
+from .reachability import Analysis, reachable
+from .relevance import relevant_actions
+from .source import Origin
+
+__all__ = ["compile_dungeon", "load_dungeon", "load_domain", "shipped_dungeons", "resolve_dungeon_path"]
+
+
+def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True) -> Model:
+    """Load, check, ground, analyse and emit. With `prune`, `successors` leaves out actions
+    that can never apply or never matter for the goal (relevance.py); `apply` keeps all."""
+    dungeon = _load(ref)
+    goal_src = _goal(dungeon, goal)
+    # Pass 1 finds which attributes and grid layers actions change; pass 2 folds the rest.
+    Grounder(dungeon, None).check_domain()
+    discovery = Grounder(dungeon, None)
+    _ground_actions(discovery, dungeon)
+    dynamic = {w for w in discovery.writes if w[0] != "<grid>"}
+    g = Grounder(dungeon, dynamic)
+    _check_keyed_objects(g, dungeon)
+    actions = _ground_actions(g, dungeon)
+    grid_ys = [y for kind, y in g.writes if kind == "<grid>"]
+    layers = None if any(not isinstance(y, ir.Const) for y in grid_ys) else \
+        {int(y.value) for y in grid_ys if 0 <= y.value < dungeon.height}
+    goal_ir = g.bool_expr(goal_src.node, Ctx(goal_src))
+    dom = dungeon.domain
+    failure_ir = g.bool_expr(dom.failure.node, Ctx(dom.failure)) if dom.failure else ir.FALSE
+    venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
+    n_values = len(venum.values)
+
+    # Relaxed reachability refines which layers really change, and which actions can apply.
+    layout = make_layout(g, dungeon, dynamic, layers)
+    initial = layout.initial(g, dungeon)
+    reach = reachable(layout, actions, {s.var: initial[s.index] + s.lo for s in layout.slots}, n_values)
+    layout = make_layout(g, dungeon, dynamic, {y for y, vals in reach.written.items() if vals})
+    initial = layout.initial(g, dungeon)
+    an = Analysis(layout, n_values)
+    if prune:
+        search = sorted(relevant_actions(actions, sorted(reach.applicable), goal_ir, failure_ir, an))
+    else:
+        search = list(range(len(actions)))
+    enum_sizes = {n: len(e.values) for n, e in dom.enums.items()}
+    emitter = Emitter(layout, enum_sizes)
+    ns, source = emitter.build(actions, goal_ir, failure_ir, search)
+    _check_start(g, emitter, ns, dungeon, initial)
+
+    @functools.lru_cache(maxsize=1)
+    def dense_functions():
+        """The same functions over the dense layout (`Model.dense`), for the PDDL export."""
+        dense_ns, _ = Emitter(layout, enum_sizes, compact=False).build(actions, goal_ir, failure_ir, search)
+        return dense_ns
+
+    grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
+                layout.static_grid, tuple(venum.values), layout.grid_default)
+    variables = tuple(Variable(s.var.label, s.index, s.lo, s.hi, s.var.type,
+                               tuple(dom.enums[s.var.type].values) if s.var.type in dom.enums else ())
+                      for s in layout.slots)
+    position, static_pos, position_vars = _position(dungeon, layout)
+    goal_positions = _goal_positions(an, reach, goal_ir, position, static_pos, position_vars, layout)
+
+    @functools.lru_cache(maxsize=1)
+    def pattern_database():
+        return patterns.build(layout, actions, search, goal_ir, reach, n_values, position_vars, initial)
+
+    built: dict = {}
+
+    def relaxed_task(time_limit: float | None = None):
+        """The delete-relaxed view (relaxed.py), built once; None if it exceeds its limits."""
+        if "task" not in built:
+            try:
+                built["task"] = relaxed.build(layout, actions, search, goal_ir, reach, n_values,
+                                               initial + layout.start_cells, time_limit)  # dense
+            except relaxed.RelaxedTooBig as exc:
+                if "time" in str(exc):
+                    return None  # another call, with more time, may still build it
+                built["task"] = None
+        return built["task"]
+
+    report = {
+        "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
+        "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
+                    for c, cd in dom.classes.items()},
+        "objects": {c: (g.by_class[c] if not cd.key else
+                        (f"{dungeon.width * dungeon.height * dungeon.depth} cells" if c == dungeon.grid_class
+                         else f"{len(g.keys_of(c))} keyed objects"))
+                    for c, cd in dom.classes.items()},
+        "functions": {f: [f"{p.name}: {p.type}" for p in fd.params] for f, fd in dom.functions.items()},
+        "action_schemas": {a: [f"{p.name}: {p.type}" for p in ad.params] for a, ad in dom.actions.items()},
+        "grounded_actions": len(actions),
+        "never_applicable": [actions[i].name for i in range(len(actions)) if i not in reach.applicable],
+        "pruned_from_search": [actions[i].name for i in range(len(actions)) if i not in search],
+        "state_variables": len(layout.slots),
+        "mutable_cells": len(layout.layers) * dungeon.width * dungeon.depth,
+        "mutable_layers": list(layout.layers),
+        # a state: the variables, then 4 bytes per cell that differs from the start
+        "state_bytes": {"start": len(initial), "per_changed_cell": 4,
+                        "worst": len(initial) + 4 * layout.mutable_cells, "dense": layout.size},
+        "goal": goal_src.text,
+        "goal_positions": None if goal_positions is None else len(goal_positions),
+        "warnings": [str(w) for w in dungeon.warnings],
+    }
+    return Model(
+        name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,
+        action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
+        initial=initial, successors=ns["successors"],
+        apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
+        why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
+        pre_texts=tuple(tuple(a.pre_text) for a in actions),
+        is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
+        position=position, position_static=static_pos, goal_positions=goal_positions,
+        report=report, source=source, display=_display(dungeon, layout),
+        search_actions=tuple(search), lazy={"pattern_database": pattern_database,
+                                                    "relaxed_task": relaxed_task,
+                                                    "dense_functions": dense_functions})
+
+
+def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:
+    """The domain's `dungeon.start` condition (e.g. "the agent's cells are free") must hold
+    in the dungeon's start, or the agent would begin stuck inside a wall with no hint why."""
+    from .domain import _expr
+    from .source import error_at
+    binding = dungeon.domain.binding
+    if "start" not in binding:
+        return
+    src = _expr(binding, "start")
+    space = dict(ns)
+    exec(compile(emitter.predicate_source("start_ok", g.bool_expr(src.node, Ctx(src))), "<bcc start>", "exec"), space)
+    if space["start_ok"](initial):
+        return
+    text = " ".join(src.text.split())
+    message = f"the dungeon's start breaks its domain's start condition `{text}`"
+    where = dungeon.where.get((dungeon.agent_name, "x"))
+    raise error_at(*where, message + " (is the agent inside a block?)") if where else BccError(message, dungeon.path)
+
+
+def _load(ref) -> Dungeon:
+    """load_dungeon, through the on-disk cache (compiler/cache.py) when `ref` names a file."""
+    from .cache import load_cached
+    path = resolve_dungeon_path(ref)
+    return load_cached(path, load_dungeon)
+
+
+def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
+    if goal is not None:
+        from .parse import parse_expression   # lark: imported only when text is parsed
+        where = Origin("--goal", 1, 1)
+        return Expr(parse_expression(goal, where), where, goal)
+    if dungeon.goal is None:
+        raise BccError("the dungeon has no `goal`; add one or pass --goal EXPRESSION", dungeon.path)
+    return dungeon.goal
+
+
+def _check_keyed_objects(g: Grounder, d: Dungeon) -> None:
+    """Objects a dungeon gives by key (inventory slots) must exist in their class's key range,
+    and every integer a dungeon gives a named object must lie in its attribute's range."""
+    from .source import error_at
+    for name, (cls, values) in d.objects.items():
+        cdef = d.domain.classes[cls]
+        for attr, value in values.items():
+            rng = g.attr_range(cdef, attr) if cdef.attrs[attr].type == "int" else None
+            if rng is not None and not rng[0] <= value <= rng[1]:
+                where = d.where.get((name, attr))
+                message = f"{name}.{attr} = {value} is outside its range [{rng[0]}, {rng[1]}]"
+                raise error_at(*where, message) if where else BccError(message, d.path)
+    for cls, objects in d.keyed.items():
+        valid = set(g.keys_of(cls))
+        for key in objects:
+            if key not in valid:
+                where = d.where.get(((cls, key), "key"))
+                message = f"{cls}[{', '.join(map(str, key))}] does not exist: keys range over {g.key_ranges[cls]}"
+                raise error_at(*where, message) if where else BccError(message, d.path)
+
+
+def _grid_value_attr(d: Dungeon) -> str:
+    cdef = d.domain.classes[d.grid_class]
+    return next(a for a in cdef.attrs if a not in cdef.key)
+
+
+def _ground_actions(g: Grounder, d: Dungeon) -> list[GroundAction]:
+    out = []
+    for schema in d.domain.actions.values():
+        choices = []
+        for p in schema.params:
+            if p.type not in g.by_class or d.domain.classes[p.type].key:
+                raise schema.effects.where.error(
+                    f"action {schema.name}: parameter {p.name!r} must be of a class of named objects, not {p.type!r}")
+            choices.append([(p.name, obj) for obj in g.by_class[p.type]])
+        for combo in itertools.product(*choices):
+            multi = any(len(g.by_class[p.type]) > 1 for p in schema.params)
+            name = f"{schema.name}({', '.join(o for _, o in combo)})" if multi else schema.name
+            out.append(_ground_one(g, schema, name, combo, len(out)))
+    return out
+
+
+def _ground_one(g: Grounder, schema, name: str, combo, number: int) -> GroundAction:
+    from .ground import ObjRef
+    env = {pname: ObjRef(obj, g.d.objects[obj][0]) for pname, obj in combo}
+    lets = []
+    for let_name, src in schema.lets:
+        value = g.expr(src.node, Ctx(src, env))
+        if isinstance(value, (ir.Const, ir.Local)) or not hasattr(value, "type") or not isinstance(value.type, str) \
+                or value.type in g.dom.classes:
+            env[let_name] = value  # constants and object references are substituted, not stored
+            continue
+        loc = ir.Local(f"a{number}_{let_name}", value.type)
+        lets.append((loc, value))
+        env[let_name] = loc
+    pre, texts = [], []
+    for src in schema.pre:
+        cond = g.bool_expr(src.node, Ctx(src, env))
+        if isinstance(cond, ir.Const) and cond.value:
+            continue
+        pre.append(cond)
+        texts.append(" ".join(src.text.split()))
+    effects = g.effects(schema.effects.node, Ctx(schema.effects, env))
+    check_nesting(name, pre, effects, schema.effects)
+    return GroundAction(name, schema.cost, lets, pre, texts, effects)
+
+
+def _position(d: Dungeon, layout):
+    """Per axis of the agent's `position`: (state index, low) if it changes, else its value."""
+    cls_name, values = d.objects[d.agent_name]
+    cdef = d.domain.classes[cls_name]
+    dyn, static, variables = [], [], []
+    for axis in cdef.position:
+        var = ir.StateVar(d.agent_name, cls_name, axis, cdef.attrs[axis].type)
+        slot = layout.by_var.get(var)
+        dyn.append((slot.index, slot.lo) if slot else None)
+        static.append(None if slot else values.get(axis, cdef.attrs[axis].default))
+        variables.append(var)
+    return tuple(dyn), tuple(static), variables
+
+
+def _goal_positions(an: Analysis, reach, goal_ir, position, static_pos, position_vars, layout):
+    """Agent positions at which the goal may hold (an over-approximation), for Manhattan."""
+    if not position:
+        return None
+    cell, layer = an.cells(reach.written)
+    axes = [[value] if dyn is None else list(range(layout.slots[dyn[0]].lo, layout.slots[dyn[0]].hi + 1))
+            for dyn, value in zip(position, static_pos)]
+    found = []
+    for point in itertools.product(*axes):
+        sets = dict(reach.values)
+        sets.update({var: frozenset({v}) for var, dyn, v in zip(position_vars, position, point) if dyn is not None})
+        if maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal_ir)):
+            found.append(point)
+    return np.array(found, dtype=np.int64).reshape(-1, len(position))
+
+
+def _display(d: Dungeon, layout) -> dict:
+    """What `bcc show` needs to draw a state: legend glyphs and the agent's facing."""
+    legend_src = d.legend_columns
+    start_char = d.start_char
+    glyphs = {}
+    for ch, column in legend_src.items():
+        key = tuple(column)
+        if key not in glyphs or glyphs[key] == start_char:
+            glyphs[key] = ch
+    cls_name = d.objects[d.agent_name][0]
+    facing = None
+    attr = (d.domain.binding.get("agent_fields") or {}).get("facing")
+    if attr:
+        adef = d.domain.classes[cls_name].attrs[attr]
+        slot = layout.by_var.get(ir.StateVar(d.agent_name, cls_name, attr, adef.type))
+        by_value = {v: k for k, v in adef.names.items()}
+        facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
+                  "value": d.objects[d.agent_name][1].get(attr), "names": by_value}
+    # Other named objects with a position are drawn by the initial of their name.
+    objects = []
+    for name, (cls, values) in d.objects.items():
+        pos = d.domain.classes[cls].position
+        if name != d.agent_name and len(pos) == 3:
+            objects.append((name, values.get(pos[0]), values.get(pos[2])))
+    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default, "objects": objects}
