@@ -151,6 +151,18 @@ def test_import_does_not_load_third_party_planners():
     assert "unified_planning" not in out and "up_fast_downward" not in out
 
 
+def test_import_command_does_not_load_the_yaml_front_end():
+    # Start-up is most of the time on small problems: `bcc import pddl` (A*, LM-cut) must not
+    # load the YAML front-end, numpy or yaml (a quarter of a second together).
+    code = ("import sys\nfrom bcc.cli import main\ntry:\n"
+            f"    main(['import', 'pddl', {str(HERE / 'gripper-domain.pddl')!r}, {str(HERE / 'gripper-3.pddl')!r}])\n"
+            "except SystemExit as e:\n    assert e.code == 0, e.code\n"
+            "print('LOADED', sorted(m for m in sys.modules if m.split('.')[0] in ('yaml', 'numpy', 'networkx')"
+            " or m == 'bcc.compiler.pipeline'))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.splitlines()[-1] == "LOADED []"
+
+
 def test_generated_code_holds_no_name_from_the_files(tmp_path):
     # PDDL names are input: the generated successor function holds only indices.
     model = load("gripper-3")
