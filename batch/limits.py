@@ -70,30 +70,13 @@ def _die_with_parent() -> None:
         pass
 
 
-def _limit_memory(extra_mb: float) -> None:
-    """Cap the address space at what the process maps now plus `extra_mb`."""
-    import resource
-    try:
-        with open("/proc/self/status") as f:
-            vm = next(int(l.split()[1]) for l in f if l.startswith("VmSize:")) * 1024
-    except (OSError, StopIteration, ValueError):
-        return
-    cap = vm + int(extra_mb * 2**20)
-    try:
-        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
-        if hard != resource.RLIM_INFINITY:
-            cap = min(cap, hard)
-        resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
-    except (ValueError, OSError):
-        pass
-
-
 def _child_main(conn, function, item, memory_mb, orphan_kill) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     if orphan_kill:
         _die_with_parent()
     if memory_mb is not None:
-        _limit_memory(memory_mb)
+        from ..solvers.memory import cap_growth
+        cap_growth(memory_mb)
     try:
         message = ("ok", function(item))
     except MemoryError:

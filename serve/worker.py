@@ -10,29 +10,19 @@ reported as a failure). Either way the server's process is never touched.
 from __future__ import annotations
 
 import os
-import resource
 
 from ..errors import BccError, ModelError
 from ..solvers import LEARNING, Budget, get_solver, optimal_cost
-from ..solvers.memory import current_rss_mb
+from ..solvers.memory import cap_growth, current_rss_mb
 from ..solvers.limits import Deadline
 from .posted import DungeonRef, compile_ref, public_error
 # Imported here so the fork server preloads them: a job never pays for these imports.
 from ..solvers import astar, bfs  # noqa: F401
 
 
-def _vm_bytes() -> int:
-    with open("/proc/self/statm") as f:
-        return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
-
-
 def limit_memory(memory_mb: float) -> float:
     """Cap this process's address space; return the RSS ceiling (MB) for the solver's Budget."""
-    try:
-        cap = _vm_bytes() + int(memory_mb * 2**20)
-        resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
-    except (OSError, ValueError):  # no /proc or no rlimits: the Budget alone still limits
-        pass
+    cap_growth(memory_mb, lock=True)   # without /proc or rlimits the Budget alone still limits
     return current_rss_mb() + memory_mb
 
 

@@ -57,15 +57,22 @@ def peak_rss_mb() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
-def _set_cap() -> None:
+def cap_growth(extra_mb: float, lock: bool = False) -> bool:
+    """Cap the address space at what the process maps now plus `extra_mb` (never above
+    the hard limit); with `lock`, the hard limit too, so the process cannot lift it (a
+    sandboxed job). False when this system has no /proc or rlimits to do it with."""
     statm = _statm()
-    if statm is None or _budget_mb is None:
-        return
-    vm, rss = statm
-    room = max(_budget_mb * 2**20 - rss, 2**20)
-    hard = resource.getrlimit(resource.RLIMIT_AS)[1]
-    cap = int(vm + room)
-    resource.setrlimit(resource.RLIMIT_AS, (cap if hard == resource.RLIM_INFINITY else min(cap, hard), hard))
+    if statm is None:
+        return False
+    try:
+        hard = resource.getrlimit(resource.RLIMIT_AS)[1]
+        cap = int(statm[0] + max(extra_mb, 1) * 2**20)
+        if hard != resource.RLIM_INFINITY:
+            cap = min(cap, hard)
+        resource.setrlimit(resource.RLIMIT_AS, (cap, cap if lock else hard))
+    except (OSError, ValueError):
+        return False
+    return True
 
 
 def arm_cap(max_memory_mb: float):
@@ -75,9 +82,10 @@ def arm_cap(max_memory_mb: float):
     outer = _budget_mb
     try:
         old = resource.getrlimit(resource.RLIMIT_AS)
-        _budget_mb = max_memory_mb if outer is None else min(outer, max_memory_mb)
-        _set_cap()
     except (OSError, ValueError):
+        return None
+    _budget_mb = max_memory_mb if outer is None else min(outer, max_memory_mb)
+    if not cap_growth(_budget_mb - current_rss_mb()):
         _budget_mb = outer
         return None
     return old, outer
@@ -99,10 +107,7 @@ def reanchor_cap() -> None:
     """Move an armed cap to the address space now plus the budget left (a search's
     budget check calls this, so mappings added since the last check do not count)."""
     if _budget_mb is not None:
-        try:
-            _set_cap()
-        except (OSError, ValueError):
-            pass
+        cap_growth(_budget_mb - current_rss_mb())
 
 
 def address_space_left(mb: float) -> bool:
