@@ -74,7 +74,7 @@ def print_result(result, name: str, where: str, as_json: bool, extra: dict | Non
 # The solver options with a flag of their own on the command line (`--known-after`); the
 # values are text, checked by the chosen solver's declaration (solvers/options.py).
 # tests/test_solver_contract.py holds this list to the built-in solvers' declarations.
-SOLVER_FLAGS = ("heuristic", "weight", "preferred", "model", "episodes", "seed", "gamma", "alpha", "epsilon",
+SOLVER_FLAGS = ("heuristic", "weight", "preferred", "evaluation", "model", "episodes", "seed", "gamma", "alpha", "epsilon",
                 "delta", "known_after", "max_steps", "fd_search")
 
 

@@ -46,6 +46,7 @@ class SolveRequest(DungeonRequest):
     heuristic: str | None = Field(None, description="Informed solvers: the heuristic (GET /solvers lists them).")
     weight: float | None = Field(None, description="astar/wastar: f = g + W h, W >= 1.")
     preferred: bool | None = Field(None, description="gbfs with hff: also expand by its preferred actions.")
+    evaluation: str | None = Field(None, description="gbfs: when h is computed, eager, lazy or auto.")
     episodes: int | None = Field(None, description="Learning solvers: number of episodes.")
     seed: int | None = Field(None, description="Learning solvers: random seed.")
     model: str | None = Field(None, description="rmax: the model learner, tabular or oo [default: tabular].")

@@ -5,6 +5,12 @@ plan), successors reached by them also go to a second open list, and the search
 alternates between the two, giving the preferred list BOOST extra turns each time h
 improves (Fast Downward's dual queue with boosting). Preferred actions only change the
 order of expansion, never which states can be reached, so completeness is kept.
+
+Evaluation is *lazy* (deferred, as in Fast Downward's lazy search) for the heuristics of
+the relaxed view, whose one evaluation costs far more than generating a state: a state
+is queued under its parent's h and its own h is computed only when it is expanded, so
+one evaluation per expansion instead of one per generated state. `--evaluation eager`
+computes h on generation (the default for table heuristics such as pdb).
 """
 from __future__ import annotations
 
@@ -17,6 +23,7 @@ from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
 BOOST = 1000
+COSTLY = {"hmax", "hadd", "hff", "lmcut"}   # heuristics evaluated lazily by default
 
 
 def preferred_of(h):
@@ -29,12 +36,17 @@ def preferred_of(h):
 
 @declare(heuristic_option("pdb"),
          Option("preferred", bool, True, "with hff: also expand states reached by its preferred actions "
-                "(a second queue, boosted on progress)"))
+                "(a second queue, boosted on progress)"),
+         Option("evaluation", str, "auto", "when h is computed: eager (on generation), lazy (on expansion, "
+                "successors queued under the parent's h), auto (lazy for the relaxed-view heuristics)",
+                choices=("auto", "eager", "lazy")))
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", preferred: bool = True,
-          **options) -> Result:
+          evaluation: str = "auto", **options) -> Result:
     meter = Meter(budget, progress)
     h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
     helpful = preferred_of(h) if preferred else None
+    if evaluation == "lazy" or evaluation == "auto" and heuristic in COSTLY:
+        return _lazy(model, budget, meter, h, helpful, heuristic)
     start = model.initial
     parents = {start: None}
     h0 = h(start)
@@ -89,3 +101,62 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
                                generated=generated,
                                stored=len(parents), heuristic=heuristic, initial_h=h0,
                                message="no plan exists: every reachable state was explored"))
+
+
+def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str) -> Result:
+    """Greedy best-first search with deferred evaluation (see the module docstring)."""
+    start = model.initial
+    parents = {start: None}
+    h0 = h(start)
+
+    def finish(**kw) -> Result:
+        return meter.finish(Result(solver="gbfs", stored=len(parents), heuristic=heuristic, initial_h=h0, **kw))
+
+    if h0 == math.inf:
+        return finish(solved=False, status="no_solution",
+                      message="no plan exists: the goal cannot hold at any reachable position")
+    known = {start: (h0, helpful() if helpful else frozenset())}
+    queues = [[(h0, 0, start)], []]   # all states; states reached by a preferred action
+    closed = set()
+    turn = boost = 0
+    best = h0
+    tie = expanded = generated = 0
+    while queues[0] or queues[1]:
+        if boost > 0 and queues[1]:
+            q, boost = 1, boost - 1
+        else:
+            q = turn if queues[turn] else 1 - turn
+            turn = 1 - turn
+        _, _, state = heapq.heappop(queues[q])
+        if state in closed:
+            continue
+        closed.add(state)
+        if model.is_goal(state):
+            plan, cost = extract_plan(model, parents, state)
+            return finish(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded,
+                          generated=generated)
+        if state in known:
+            hs, prefer = known.pop(state)
+        else:
+            hs = h(state)
+            prefer = helpful() if helpful else frozenset()
+        if hs == math.inf:
+            continue
+        if hs < best:
+            best, boost = hs, BOOST
+        expanded += 1
+        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
+            which = meter.check(expanded, generated, len(parents))
+            if which:
+                return budget_result("gbfs", which, meter, expanded, generated, len(parents))
+        for action, nxt in model.successors(state):
+            generated += 1
+            if nxt in parents or model.is_failure(nxt):
+                continue
+            parents[nxt] = (state, action)
+            tie += 1
+            heapq.heappush(queues[0], (hs, tie, nxt))
+            if action in prefer:
+                heapq.heappush(queues[1], (hs, tie, nxt))
+    return finish(solved=False, status="no_solution", expanded=expanded, generated=generated,
+                  message="no plan exists: every reachable state was explored")

@@ -142,6 +142,32 @@ def test_greedy_plans_replay(tmp_path, heuristic):
     assert check.valid and check.cost == result.cost
 
 
+@pytest.mark.parametrize("evaluation", ["eager", "lazy"])
+def test_greedy_evaluation_modes(tmp_path, monkeypatch, evaluation):
+    """Lazy evaluation computes h once per expanded state (plus the start), eager once per
+    new successor; both plans replay."""
+    from bcc.solvers import heuristics
+    model = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
+    calls = [0]
+    make = heuristics.HEURISTICS["hff"]
+
+    def counted(m, *args, **kw):
+        h = make(m, *args, **kw)
+
+        def wrapped(state):
+            calls[0] += 1
+            return h(state)
+        return wrapped
+    monkeypatch.setitem(heuristics.HEURISTICS, "hff", counted)
+    result = get_solver("gbfs")(model, BUDGET, heuristic="hff", evaluation=evaluation)
+    assert result.solved
+    assert replay(model, [(p, 1, 1) for p in result.plan]).valid
+    if evaluation == "lazy":
+        assert calls[0] <= result.expanded + 1
+    else:
+        assert calls[0] > result.expanded + 1
+
+
 def test_relaxed_view_facts_and_goal():
     """The grid's goal is the agent on the gold at (1, 1): one fact of the merged (x, z) group."""
     model = compile_dungeon("grid")
