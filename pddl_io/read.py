@@ -34,7 +34,61 @@ def _parser():
 
     grammar = (Path(__file__).resolve().parent.parent / "grammar" / "pddl.lark").read_text()
     grammar = grammar.replace('list: "(" _item* ")"', 'list: LPAR _item* ")"\nLPAR: "("')
+    tables = _cached_tables(grammar)
+    if tables is not None:
+        try:
+            return Lark._load_from_dict(tables["data"], tables["memo"], transformer=ToLists())
+        except Exception:  # noqa: BLE001 - a stale or damaged entry: build the tables again
+            pass
+    parser = Lark(grammar, parser="lalr", maybe_placeholders=False)
+    _save_tables(grammar, parser)
     return Lark(grammar, parser="lalr", transformer=ToLists(), maybe_placeholders=False)
+
+
+def _tables_path(grammar: str) -> Path | None:
+    """Where the parser tables of `grammar` are cached: the user's bcc cache folder
+    (compiler/cache.py: BCC_CACHE_DIR, BCC_NO_CACHE), keyed by grammar, lark and Python."""
+    import hashlib
+    import sys
+
+    import lark
+
+    from ..compiler.cache import cache_dir
+    folder = cache_dir()
+    if folder is None:
+        return None
+    key = hashlib.sha256(f"{grammar}|{lark.__version__}|{sys.version_info[:2]}".encode()).hexdigest()[:32]
+    return folder / f"pddl-parser-{key}.txt"
+
+
+def _cached_tables(grammar: str) -> dict | None:
+    """Building lark's LALR tables takes 60 ms, most of a small import; reading them back,
+    5 ms. The entry is a Python literal read by `ast.literal_eval`: a tampered file can
+    be refused, never run (unlike lark's own pickle cache)."""
+    import ast
+    path = _tables_path(grammar)
+    if path is None:
+        return None
+    try:
+        tables = ast.literal_eval(path.read_text(encoding="utf-8"))
+    except Exception:  # noqa: BLE001 - missing, unreadable or damaged: a miss
+        return None
+    return tables if isinstance(tables, dict) and {"data", "memo"} <= tables.keys() else None
+
+
+def _save_tables(grammar: str, parser) -> None:
+    from lark.grammar import Rule
+    from lark.lexer import TerminalDef
+    path = _tables_path(grammar)
+    if path is None:
+        return
+    try:
+        data, memo = parser.memo_serialize([TerminalDef, Rule])
+        from ..atomic import write_text
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_text(path, repr({"data": data, "memo": memo}))
+    except Exception:  # noqa: BLE001 - no cache (read-only home, full disk): only slower
+        pass
 
 
 def read_sexpr(path: str) -> list:

@@ -205,3 +205,24 @@ def test_gbfs_on_an_imported_problem_uses_the_relaxed_plan():
     assert r.exit_code == 0, r.output
     out = json.loads(r.output)
     assert out["heuristic"] == "hff" and out["solved"] and out["cost"] >= 9
+
+
+def test_parser_tables_are_cached_as_a_literal_and_a_damaged_entry_is_rebuilt(tmp_path, monkeypatch):
+    from bcc.pddl_io import read
+    monkeypatch.setenv("BCC_CACHE_DIR", str(tmp_path))
+    monkeypatch.delenv("BCC_NO_CACHE", raising=False)
+    problem = str(HERE / "gripper-3.pddl")
+    read._parser.cache_clear()
+    try:
+        fresh = read.read_sexpr(problem)             # builds the tables, writes the entry
+        entries = list(tmp_path.glob("pddl-parser-*.txt"))
+        assert len(entries) == 1
+        read._parser.cache_clear()
+        assert read.read_sexpr(problem) == fresh     # read back from the entry
+        for damage in ("__import__('os').system('false')", "{'data': 1}", "((("):
+            entries[0].write_text(damage)            # code is never run, only refused
+            read._parser.cache_clear()
+            got = read.read_sexpr(problem)
+            assert got == fresh and [(x.line, x.column) for x in got] == [(x.line, x.column) for x in fresh]
+    finally:
+        read._parser.cache_clear()
