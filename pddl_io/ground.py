@@ -320,16 +320,41 @@ def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance
             c = fold(cond, env2) if cond != TRUE else TRUE
             if c != FALSE:
                 effects.append((c, atom_id(atom), add))
+        effects = effective_effects(pre, effects)
+        if not effects:
+            continue    # changes nothing: a self-loop, never part of a shortest plan
         cost = _cost(a, env, prob, dom) if use_costs else 1
         actions.append(GroundAction("(" + " ".join((a.name, *key)) + ")", pre, effects, cost))
     goal = fold(prob.goal, {})
     initial = {atom_ids[a] for a in init if a in atom_ids}
     task = GroundTask(prob.name, atoms, initial, actions, goal, use_costs,
-                      stats={"reached_atoms": len(reached), "grounded_actions": len(actions)})
+                      stats={"reached_atoms": len(reached), "instantiated_actions": len(actions)})
+    task = fold_unchanging(task)
     if relevance:
         task = relevant(task)
     task.stats.update({"atoms": len(task.atoms), "actions": len(task.actions)})
     return task
+
+
+def effective_effects(pre, effects: list) -> list:
+    """The effects that can change the state, as Fast Downward's translator keeps them.
+
+    An unconditional add beats any delete of the same atom (PDDL: deletes apply first);
+    an add of an atom the precondition requires, or a delete of one it forbids, changes
+    nothing. Without this, `(not (channel-free ?l)) (channel-free ?l)` would count as
+    writing `channel-free`, and backward relevance would keep every action doing it."""
+    conj = [pre] if not (isinstance(pre, tuple) and pre[0] == "and") else list(pre[1])
+    true = {c for c in conj if isinstance(c, int)}
+    false = {c[1] for c in conj if isinstance(c, tuple) and c[0] == "not" and isinstance(c[1], int)}
+    added = {atom for cond, atom, add in effects if add and cond == TRUE}
+    out = []
+    for cond, atom, add in effects:
+        if add and atom in true:
+            continue
+        if not add and (atom in false or atom in added):
+            continue
+        out.append((cond, atom, add))
+    return list(dict.fromkeys(out))
 
 
 def _cost(a, env, prob: Problem, dom: Domain) -> int:
@@ -374,6 +399,53 @@ def atoms_of(f, acc: set) -> set:
         for s in f[1]:
             atoms_of(s, acc)
     return acc
+
+
+def _substitute(f, value: dict):
+    """Ground formula `f` with the atoms of `value` replaced by TRUE/FALSE, simplified."""
+    if isinstance(f, int):
+        v = value.get(f)
+        return f if v is None else (TRUE if v else FALSE)
+    kind = f[0]
+    if kind == "not":
+        sub = _substitute(f[1], value)
+        return FALSE if sub == TRUE else TRUE if sub == FALSE else ("not", sub)
+    if kind in ("and", "or"):
+        return _junction(kind, [_substitute(g, value) for g in f[1]])
+    return f
+
+
+def fold_unchanging(task: GroundTask) -> GroundTask:
+    """Atoms that no effective effect (effective_effects) changes keep their initial
+    value: fold them into the formulas, as grounding did for the atoms no effect writes.
+    Repeated until nothing changes (an action whose precondition folds to false goes,
+    and with it its effects)."""
+    actions = task.actions
+    while True:
+        changing = {atom for a in actions for _, atom, add in a.effects if add != (atom in task.initial)}
+        value = {i: i in task.initial for i in range(len(task.atoms)) if i not in changing}
+        if not value:
+            break
+        out = []
+        for a in actions:
+            pre = _substitute(a.pre, value)
+            if pre == FALSE:
+                continue
+            effects = []
+            for c, atom, add in a.effects:
+                if atom in value:
+                    continue
+                c = _substitute(c, value)
+                if c != FALSE:
+                    effects.append((c, atom, add))
+            effects = effective_effects(pre, effects)
+            if effects:
+                out.append(GroundAction(a.name, pre, effects, a.cost))
+        if len(out) == len(actions) and all(x.pre == y.pre and x.effects == y.effects for x, y in zip(out, actions)):
+            break
+        actions = out
+    goal = _substitute(task.goal, value) if value else task.goal
+    return GroundTask(task.name, task.atoms, task.initial, actions, goal, task.uses_costs, dict(task.stats))
 
 
 def relevant(task: GroundTask) -> GroundTask:

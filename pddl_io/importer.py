@@ -23,9 +23,9 @@ def import_pddl(domain: str, problem: str, max_actions: int | None = None):
     parsed = time.perf_counter()
     task = ground(dom, prob, max_actions)
     grounded = time.perf_counter()
-    report = {"dungeon": prob.name, "domain": "pddl", "pddl_domain": dom.name,
-              "atoms": len(task.atoms), "grounded_actions": len(task.actions),
-              "action_costs": task.uses_costs, **task.stats,
+    report = {"dungeon": prob.name, "domain": "pddl", "pddl_domain": dom.name, **task.stats,
+              "atoms": len(task.atoms), "grounded_actions": len(task.actions),   # after pruning
+              "action_costs": task.uses_costs,
               "files": {"domain": str(Path(domain)), "problem": str(Path(problem))}}
     model = to_model(task, problem, report, (domain, problem))
     report["seconds"] = {"parse": round(parsed - start, 4), "ground": round(grounded - parsed, 4),

@@ -226,3 +226,35 @@ def test_parser_tables_are_cached_as_a_literal_and_a_damaged_entry_is_rebuilt(tm
             assert got == fresh and [(x.line, x.column) for x in got] == [(x.line, x.column) for x in fresh]
     finally:
         read._parser.cache_clear()
+
+
+CHANNEL_DOMAIN = """(define (domain channel)
+  (:requirements :strips)
+  (:predicates (at ?x) (road ?x ?y) (free) (sent ?x) (have ?x))
+  (:action move :parameters (?x ?y) :precondition (and (at ?x) (road ?x ?y))
+           :effect (and (not (at ?x)) (at ?y)))
+  (:action take :parameters (?x) :precondition (at ?x) :effect (have ?x))
+  ; takes the channel and gives it back: (free) never changes
+  (:action send :parameters (?x) :precondition (and (have ?x) (free))
+           :effect (and (not (free)) (free) (sent ?x))))
+"""
+CHANNEL_PROBLEM = """(define (problem p) (:domain channel)
+  (:objects a b c)
+  (:init (at a) (road a b) (road b c) (road b a) (road c b) (free))
+  (:goal (sent c)))
+"""
+
+
+def test_effects_that_change_nothing_neither_keep_atoms_nor_actions(tmp_path):
+    # `(not (free)) (free)` leaves (free) true (deletes apply first), so (free) never
+    # changes and folds away; sending a or b changes only atoms nothing relevant reads.
+    # Optimal plan by hand: move a b, move b c, take c, send c = 4.
+    (tmp_path / "d.pddl").write_text(CHANNEL_DOMAIN)
+    (tmp_path / "p.pddl").write_text(CHANNEL_PROBLEM)
+    model = import_pddl(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl"))
+    task = model.data("ground_task")
+    atoms = {task.atom_text(i) for i in range(len(task.atoms))}
+    assert "(free)" not in atoms and "(sent a)" not in atoms and "(sent c)" in atoms
+    assert sorted(a for a in model.action_names if a.startswith("(send")) == ["(send c)"]
+    result = get_solver("bfs")(model, Budget())
+    assert result.solved and result.cost == 4
