@@ -62,20 +62,40 @@ def read_manifest(path: Path) -> list[dict]:
     return out
 
 
+def child_env() -> dict:
+    """The environment of the timed processes: Python may cache bytecode, as it does for
+    an installed bcc (pip compiles it) and for Fast Downward's translator in site-packages;
+    with PYTHONDONTWRITEBYTECODE set, every bcc process would recompile its modules."""
+    env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    return env
+
+
+CPU: dict = {}   # the CPU seconds (user + system, children included) of the last timed() run
+
+
 def timed(cmd: list, limit: float, cwd: str | None = None) -> tuple[subprocess.CompletedProcess | None, float]:
+    """Run `cmd` as a whole process; (completed process or None if killed, wall seconds).
+    Its CPU seconds (the process and its children: Fast Downward's translator and search)
+    are left in CPU["last"]: on a loaded machine they vary less than wall time."""
+    import resource
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 15, cwd=cwd)
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 15, cwd=cwd, env=child_env())
     except subprocess.TimeoutExpired:
-        return None, time.perf_counter() - start
-    return proc, time.perf_counter() - start
+        proc = None
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    CPU["last"] = round(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, 3)
+    return proc, wall
 
 
 def run_bcc(config: str, domain: str, problem: str, limit: float, plan_file: str) -> dict:
     cmd = [sys.executable, "-m", "bcc", "import", "pddl", domain, problem, "--json", "--time-limit", str(limit),
            "-o", plan_file, *BCC_CONFIGS[config]]
     proc, seconds = timed(cmd, limit)
-    row = {"config": config, "seconds": round(seconds, 3), "solved": False}
+    row = {"config": config, "seconds": round(seconds, 3), "cpu_seconds": CPU["last"], "solved": False}
     if proc is None:
         return {**row, "status": "killed"}
     try:
@@ -95,7 +115,7 @@ def run_fd(config: str, domain: str, problem: str, limit: float) -> dict:
                os.path.join(tmp, "plan"), os.path.abspath(domain), os.path.abspath(problem),
                "--search", FD_CONFIGS[config]]
         proc, seconds = timed(cmd, limit, cwd=tmp)
-        row = {"config": config, "seconds": round(seconds, 3), "solved": False}
+        row = {"config": config, "seconds": round(seconds, 3), "cpu_seconds": CPU["last"], "solved": False}
         if proc is None:
             return {**row, "status": "killed"}
         out = proc.stdout
@@ -147,21 +167,31 @@ def check_costs(entry: dict) -> None:
 
 
 # ---- reports ------------------------------------------------------------------------
+def _ratios(problems: list, mine: str, theirs: list, field: str) -> dict:
+    """bcc's time over the fastest of `theirs` that solved it, on problems both solved."""
+    rs = []
+    for p in problems:
+        run = p["runs"].get(mine, {})
+        best = [p["runs"][f].get(field) for f in theirs if p["runs"].get(f, {}).get("solved")]
+        best = [b for b in best if b]
+        if run.get("solved") and run.get(field) and best:
+            rs.append(run[field] / min(best))
+    return {"median": round(statistics.median(rs), 2) if rs else None,
+            "worst": round(max(rs), 2) if rs else None, "problems": len(rs)}
+
+
 def summarize(problems: list, configs: list) -> dict:
     cov = {c: sum(1 for p in problems if p["runs"].get(c, {}).get("solved")) for c in configs}
     fd = [c for c in configs if c.startswith("fd-")]
+    fd_optimal = [c for c in fd if c in OPTIMAL]
     ratios = {}
     for c in configs:
         if c.startswith("fd-"):
             continue
-        rs = []
-        for p in problems:
-            mine = p["runs"].get(c, {})
-            best = [p["runs"][f]["seconds"] for f in fd if p["runs"].get(f, {}).get("solved")]
-            if mine.get("solved") and best:
-                rs.append(mine["seconds"] / min(best))
-        ratios[c] = {"median_vs_best_fd": round(statistics.median(rs), 2) if rs else None,
-                     "worst_vs_best_fd": round(max(rs), 2) if rs else None, "problems": len(rs)}
+        r = _ratios(problems, c, fd, "seconds")
+        ratios[c] = {"median_vs_best_fd": r["median"], "worst_vs_best_fd": r["worst"], "problems": r["problems"],
+                     "cpu_vs_best_fd": _ratios(problems, c, fd, "cpu_seconds"),
+                     "wall_vs_best_optimal_fd": _ratios(problems, c, fd_optimal, "seconds")}
     wrong = [p["name"] for p in problems if p.get("cost_check", "").startswith("WRONG")]
     invalid = [f"{p['name']} ({c})" for p in problems for c, r in p["runs"].items()
                if r.get("validation", "").startswith("INVALID")]
@@ -307,6 +337,9 @@ def main(argv=None):
         for c, r in s["time_ratios"].items():
             print(f"{c}: whole-process time / best Fast Downward configuration: median {r['median_vs_best_fd']}x, "
                   f"worst {r['worst_vs_best_fd']}x over {r['problems']} problems both solved")
+            cpu, opt = r.get("cpu_vs_best_fd") or {}, r.get("wall_vs_best_optimal_fd") or {}
+            print(f"{'':>{len(c)}}  CPU seconds: median {cpu.get('median')}x, worst {cpu.get('worst')}x; "
+                  f"wall vs the best optimal FD configuration: median {opt.get('median')}x, worst {opt.get('worst')}x")
         print(f"wrong costs: {s['wrong_costs'] or 'none'}; invalid plans: {s['invalid_plans'] or 'none'}")
         plot(problems, configs, args.plot)
     if dungeons:
