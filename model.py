@@ -139,11 +139,21 @@ class Model:
     display: dict = field(default_factory=dict)  # for drawing states (render.py)
     search_actions: tuple = ()                 # the actions `successors` generates (irrelevant ones pruned)
     lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
+    live_successors: Callable | None = None    # successors for search (see `search_successors`)
 
     def data(self, name: str, **options):
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
         make = self.lazy.get(name)
         return make(**options) if make else None
+
+    def search_successors(self) -> Callable[[bytes], list]:
+        """`successors` as a search wants them: next states equal to the state and failure
+        states that are not goals left out (an episode ends when the agent fails; the goal
+        wins when both hold). Generated with the model where it can be."""
+        if self.live_successors is not None:
+            return self.live_successors
+        successors, failure, goal = self.successors, self.is_failure, self.is_goal
+        return lambda s: [(a, n) for a, n in successors(s) if n != s and (not failure(n) or goal(n))]
 
     def view(self, state: bytes) -> StateView:
         """The one accessor for reading a state's variables and cells."""

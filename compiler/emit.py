@@ -55,6 +55,43 @@ def _writes_cells(effects) -> bool:
     return False
 
 
+def _var_reads(node) -> tuple[set, bool]:
+    """The variables an expression reads, and whether it reads anything else (a cell, a
+    keyed attribute chosen at run time), which makes it depend on any write."""
+    if isinstance(node, ir.Var):
+        return {node.var}, False
+    complex_ = isinstance(node, (ir.VarAt, ir.Cell, ir.CellLoop))
+    out: set = set()
+    for child in ir.children(node):
+        r, c = _var_reads(child)
+        out |= r
+        complex_ |= c
+    return out, complex_
+
+
+def _writes_any(effects, variables: set, layout: Layout) -> bool:
+    """May the effects change one of `variables` (a keyed write may change any)?"""
+    for e in effects:
+        if isinstance(e, ir.When):
+            if _writes_any(e.then, variables, layout) or _writes_any(e.orelse, variables, layout):
+                return True
+        elif isinstance(e, ir.SetVarAt) or isinstance(e, ir.SetVar) and e.var in variables:
+            return True
+    return False
+
+
+def _constant_stores(effects, layout: Layout) -> list:
+    """[(state index, stored byte)] when every effect sets a variable to a constant
+    unconditionally (the action changes nothing where all already hold), else []."""
+    out = []
+    for e in effects:
+        if not (isinstance(e, ir.SetVar) and isinstance(e.value, ir.Const)):
+            return []
+        slot = layout.by_var[e.var]
+        out.append((slot.index, int(e.value.value) - slot.lo))
+    return out
+
+
 class Emitter:
     def __init__(self, layout: Layout, enum_sizes: dict, compact: bool = True):
         self.L = layout
@@ -65,6 +102,7 @@ class Emitter:
         self.read_cells, self.write_cells = ("c", "w") if compact else ("s", "n")
         self.cell_base = 0 if compact else layout.grid_base
         self.uses_cells = False   # set while emitting a function that reads cells
+        self.state = "s"          # the name variable reads come from (the failure test reads `t`)
         self.ns: dict = {"SG": layout.static_grid, "ModelError": ModelError}
         self.tables: dict = {}
         self.tmp = itertools.count()
@@ -193,9 +231,11 @@ class Emitter:
             slot = self.L.by_var.get(node.var)
             if slot is None:
                 raise InternalError(f"{node.var.label} has no place in the state")
-            return f"s[{slot.index}]" if slot.lo == 0 else f"(s[{slot.index}] + {slot.lo})"
+            s = self.state
+            return f"{s}[{slot.index}]" if slot.lo == 0 else f"({s}[{slot.index}] + {slot.lo})"
         if isinstance(node, ir.VarAt):
-            return f"s[{self.keyed_index(node.cls, node.key, node.attr)}]" + self._lo_suffix(node.cls, node.attr)
+            return f"{self.state}[{self.keyed_index(node.cls, node.key, node.attr)}]" + \
+                self._lo_suffix(node.cls, node.attr)
         if isinstance(node, ir.Cell):
             return self.cell(node)
         if isinstance(node, ir.Lookup):
@@ -350,9 +390,20 @@ class Emitter:
         self.uses_cells = False
         return "\n".join([header] + prologue + body)
 
-    def successors_source(self, actions: list[GroundAction], search: list[int]) -> str:
+    def successors_source(self, actions: list[GroundAction], search: list[int], failure=None) -> str:
+        """`successors(s)`: every applicable search action and its next state. With
+        `failure` (the failure condition), `live(s)` instead: the same, less next states
+        equal to `s` (an action whose constant writes change nothing is not even tried)
+        and failure states that are not goals -- what a search keeps. The failure test
+        runs only after actions that write a variable it reads; a state that already fails
+        goes through `_live_slow`."""
         self.uses_cells = False
+        live = failure is not None
+        reads, complex_failure = _var_reads(failure) if live else (set(), False)
+        failure_false = live and isinstance(failure, ir.Const) and not failure.value
         lines = ["    out = []"]
+        if live and not failure_false:
+            lines.append(f"    if {self.ex(failure)}: return _live_slow(s)")
         for i in search:
             a = actions[i]
             lines.append(f"    # action {i}")  # a number, never the name: comments carry no input text
@@ -363,11 +414,30 @@ class Emitter:
                 else:
                     lines.append(f"{indent}if {text}:")
                     indent += "    "
+            if live:
+                consts = _constant_stores(a.effects, self.L)
+                if consts:
+                    lines.append(f"{indent}if {' or '.join(f's[{k}] != {v}' for k, v in consts)}:")
+                    indent += "    "
             made, result = self._new_state(a, indent)
             lines += made
-            lines.append(f"{indent}out.append(({i}, {result}))")
+            if live and not failure_false and (complex_failure or _writes_any(a.effects, reads, self.L)):
+                lines.append(f"{indent}t = {result}")
+                lines.append(f"{indent}if not {self.failure_on_t(failure)} or goal(t):")
+                lines.append(f"{indent}    out.append(({i}, t))")
+            else:
+                lines.append(f"{indent}out.append(({i}, {result}))")
         lines.append("    return out")
-        return self._function("def successors(s):", lines)
+        return self._function(f"def {'live' if live else 'successors'}(s):", lines)
+
+    def failure_on_t(self, failure) -> str:
+        """The failure test of next state `t`: inline when it reads only variables."""
+        saved, self.uses_cells, self.state = self.uses_cells, False, "t"
+        try:
+            text = self.ex(failure)
+            return "failure(t)" if self.uses_cells else text
+        finally:
+            self.uses_cells, self.state = saved, "s"
 
     def apply_source(self, i: int, a: GroundAction) -> str:
         self.uses_cells = False
@@ -395,11 +465,13 @@ class Emitter:
 
     def build(self, actions: list[GroundAction], goal, failure, search: list[int]) -> tuple[dict, str]:
         """`search`: the actions `successors` generates (all but those pruned as irrelevant)."""
-        parts = [self.successors_source(actions, search)]
+        parts = [self.successors_source(actions, search), self.successors_source(actions, search, failure)]
         parts += [self.apply_source(i, a) for i, a in enumerate(actions)]
         parts.append(self.predicate_source("goal", goal))
         parts.append(self.predicate_source("failure", failure))
         source = "\n\n".join(parts) + "\n"
         ns = dict(self.ns)
         exec(compile(source, "<bcc model>", "exec"), ns)
+        successors, fails, goal = ns["successors"], ns["failure"], ns["goal"]
+        ns["_live_slow"] = lambda s: [(a, n) for a, n in successors(s) if n != s and (not fails(n) or goal(n))]
         return ns, source

@@ -181,7 +181,7 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
     return Model(
         name=task.name, path=path, goal_text=formula_text(task.goal, task),
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
-        initial=initial, successors=ns["successors"],
+        initial=initial, successors=ns["successors"], live_successors=ns["successors"],  # no failure states
         apply_fns=tuple(f[0] for f in fns), why_fns=tuple(f[1] for f in fns),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"],

@@ -1,11 +1,16 @@
 """A* search, and its weighted variant: f = g + w * h.
 
 With w = 1 and an admissible heuristic the plan is optimal; w > 1 (`wastar`, `--weight`)
-trades optimality for speed (cost at most w times the optimum). Open list: a heap of
-(f, h, tie, g, state) -- among equal f, lower h first. Duplicates are detected on the
-packed states before the heuristic is computed; a state reached again more cheaply is
-re-queued and its older entries are skipped when popped (lazy deletion), so a merely
-admissible heuristic stays optimal.
+trades optimality for speed (cost at most w times the optimum). Among equal f, lower h
+first. Duplicates are detected on the packed states before the heuristic is computed; a
+state reached again more cheaply is re-queued and its older entries are skipped when
+popped (lazy deletion), so a merely admissible heuristic stays optimal.
+
+The open list is bucketed: a small heap of the distinct keys (f, h) and, per key, a list
+of states (the last in is expanded first). With integer costs and w = 1 a key is one int
+(f << 32 | h; a fractional h is rounded up, which keeps it admissible since every plan
+costs an integer), so a push is an append and a pop a list pop; the heap only orders the
+few distinct keys. A state's g is read back from its key, so entries are bare states.
 
 Heuristic `auto` (the default) starts with the cheap `manhattan` and, if the search is
 still running after SWITCH_AFTER expansions, builds the pattern database and re-sorts the
@@ -24,6 +29,8 @@ from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
 SWITCH_AFTER = 4096
+SHIFT = 32            # packed key: f << SHIFT | h
+LOW = (1 << SHIFT) - 1
 
 
 def weight_option(default: float) -> Option:
@@ -40,6 +47,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
         # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if there is one.
         switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
     h = HEURISTICS[used](model)
+    zero = used == "blind"
     start = model.initial
     h0 = h(start)
     # One map for everything known about a state: (g, parent state, action). A state is
@@ -47,8 +55,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     # deletion), so no closed set is kept.
     nodes = {start: (0, None, None)}
     costs = model.action_costs
-    successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
-    push, pop = heapq.heappush, heapq.heappop
+    packed = weight == 1 and all(type(c) is int for c in costs)
+    successors, is_goal = model.search_successors(), model.is_goal
 
     def result(**kw) -> Result:
         return meter.finish(Result(solver=name, heuristic=used, initial_h=h0, stored=len(nodes), **kw))
@@ -56,12 +64,21 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     if h0 == math.inf:
         return result(solved=False, status="no_solution",
                       message="no plan exists: the goal cannot hold at any reachable position")
-    tie = 0
-    open_heap = [(weight * h0, h0, tie, 0, start)]
+    keys, bins = _open_list([start], nodes, h, weight, packed)
+    get, push, pop, inf, ceil = nodes.get, heapq.heappush, heapq.heappop, math.inf, math.ceil
     expanded = generated = 0
     max_states = budget.max_states
-    while open_heap:
-        f, hs, _, g, state = pop(open_heap)
+    while keys:
+        key = keys[0]
+        entries = bins[key]
+        state = entries.pop()
+        if not entries:
+            pop(keys)
+            del bins[key]
+        if packed:
+            g = (key >> SHIFT) - (key & LOW)
+        else:
+            g = key[2]
         if nodes[state][0] < g:
             continue
         if is_goal(state):
@@ -78,23 +95,33 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
                 switching = False
                 h = HEURISTICS["pdb"](model)
                 used = "auto (manhattan, then pdb)"
-                open_heap = _resort(open_heap, nodes, h, weight)
+                keys, bins = _open_list(_open_states(keys, bins, nodes, packed), nodes, h, weight, packed)
                 # no `continue`: `state` is expanded and counted, so its successors are
                 # generated now (skipping them lost optimal paths through it)
-        for action, nxt in successors(state):
-            generated += 1
+        nexts = successors(state)
+        generated += len(nexts)
+        for action, nxt in nexts:
             g2 = g + costs[action]
-            old = nodes.get(nxt)
+            old = get(nxt)
             if old is not None and old[0] <= g2:
                 continue
-            if is_failure(nxt):
-                continue
-            hn = h(nxt)
-            if hn == math.inf:
-                continue
+            if zero:
+                hn = 0
+            else:
+                hn = h(nxt)
+                if hn.__class__ is not int:
+                    if hn == inf:
+                        continue
+                    if packed:
+                        hn = ceil(hn)
             nodes[nxt] = (g2, state, action)
-            tie += 1
-            push(open_heap, (g2 + weight * hn, hn, tie, g2, nxt))
+            key = ((g2 + hn) << SHIFT) | hn if packed else (g2 + weight * hn, hn, g2)
+            entries = bins.get(key)
+            if entries is None:
+                bins[key] = [nxt]
+                push(keys, key)
+            else:
+                entries.append(nxt)
     return result(solved=False, status="no_solution", expanded=expanded, generated=generated,
                   message="no plan exists: every reachable state was explored")
 
@@ -109,18 +136,35 @@ def _plan(model: Model, nodes: dict, state) -> tuple[list[str], int]:
     return [model.action_names[a] for a in actions], sum(model.action_costs[a] for a in actions)
 
 
-def _resort(open_heap, nodes, h, weight) -> list:
-    """The open list under a new heuristic (stale, duplicate and dead-end entries dropped)."""
-    fresh, seen = [], set()
-    for _, _, tie, g, state in open_heap:
-        if nodes[state][0] < g or state in seen:
+def _open_states(keys: list, bins: dict, nodes: dict, packed: bool) -> list:
+    """The states of the open list that are not stale, each once."""
+    out, seen = [], set()
+    for key in keys:
+        g = (key >> SHIFT) - (key & LOW) if packed else key[2]
+        for state in bins[key]:
+            if nodes[state][0] == g and state not in seen:
+                seen.add(state)
+                out.append(state)
+    return out
+
+
+def _open_list(states: list, nodes: dict, h, weight: float, packed: bool) -> tuple[list, dict]:
+    """A fresh open list (the key heap, and the states per key) of `states` under `h`;
+    dead ends (h infinite) are dropped."""
+    bins: dict = {}
+    for state in states:
+        g, hn = nodes[state][0], h(state)
+        if hn == math.inf:
             continue
-        seen.add(state)
-        hn = h(state)
-        if hn != math.inf:
-            fresh.append((g + weight * hn, hn, tie, g, state))
-    heapq.heapify(fresh)
-    return fresh
+        if packed:
+            hn = math.ceil(hn)
+            key = ((g + hn) << SHIFT) | hn
+        else:
+            key = (g + weight * hn, hn, g)
+        bins.setdefault(key, []).append(state)
+    keys = list(bins)
+    heapq.heapify(keys)
+    return keys, bins
 
 
 @declare(heuristic_option("auto"), weight_option(2.0))

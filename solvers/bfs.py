@@ -3,8 +3,9 @@
 With differing costs it finds a plan of fewest steps; its reported cost is still the
 plan's true sum of costs, and its message says it may not be the cheapest.
 
-The goal test runs when a state is generated, one layer earlier than at expansion;
-states in which the episode fails (e.g. the agent died) are never expanded.
+The goal test runs when a state is generated, one layer earlier than at expansion.
+Successors come from `Model.search_successors`: states in which the episode fails (e.g.
+the agent died) are left out there, unless they are goals, and so are self-loops.
 """
 from __future__ import annotations
 
@@ -23,18 +24,20 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     if model.is_goal(start):
         return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=[], cost=0, expanded=0,
                                    generated=1, stored=1))
-    successors, is_goal, is_failure = model.successors, model.is_goal, model.is_failure
+    successors, is_goal = model.search_successors(), model.is_goal
     frontier = deque([start])
+    append, popleft = frontier.append, frontier.popleft
     expanded = generated = 0
     while frontier:
-        state = frontier.popleft()
+        state = popleft()
         expanded += 1
         if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
             if which:
                 return budget_result("bfs", which, meter, expanded, generated, len(parents))
-        for action, nxt in successors(state):
-            generated += 1
+        nexts = successors(state)
+        generated += len(nexts)
+        for action, nxt in nexts:
             if nxt in parents:
                 continue
             parents[nxt] = (state, action)
@@ -45,8 +48,7 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
                 return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=plan, cost=cost,
                                            expanded=expanded, generated=generated, stored=len(parents),
                                            message=note))
-            if not is_failure(nxt):
-                frontier.append(nxt)
+            append(nxt)
     return meter.finish(Result(solver="bfs", solved=False, status="no_solution", expanded=expanded,
                                generated=generated,
                                stored=len(parents), message="no plan exists: every reachable state was explored"))
