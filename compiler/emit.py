@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import math
 from dataclasses import dataclass
 
 from ..errors import BccError, InternalError, ModelError
@@ -92,6 +93,9 @@ def _constant_stores(effects, layout: Layout) -> list:
     return out
 
 
+_MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}   # c OP v  <=>  v MIRROR[OP] c
+
+
 class Emitter:
     def __init__(self, layout: Layout, enum_sizes: dict, compact: bool = True):
         self.L = layout
@@ -103,6 +107,7 @@ class Emitter:
         self.cell_base = 0 if compact else layout.grid_base
         self.uses_cells = False   # set while emitting a function that reads cells
         self.state = "s"          # the name variable reads come from (the failure test reads `t`)
+        self.known: dict = {}     # IR local name -> (lo, hi) its preconditions so far guarantee
         self.ns: dict = {"SG": layout.static_grid, "ModelError": ModelError}
         self.tables: dict = {}
         self.tmp = itertools.count()
@@ -182,7 +187,7 @@ class Emitter:
             return bytes(n)
 
         self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,
-                       _merge=merge)
+                       _merge=merge, _S0=S0, _expand=expand)
 
     # ---- expressions -------------------------------------------------------------------
     def simple(self, node) -> bool:
@@ -204,6 +209,8 @@ class Emitter:
         """Bounds of an integer expression's value, when cheaply known (else None)."""
         if isinstance(node, (ir.Const, ir.Var)):
             return self.var_range(node)
+        if isinstance(node, ir.Local) and node.name in self.known:
+            return self.known[node.name]
         if node.type == "bool":
             return 0, 1
         if node.type in self.enum_sizes:
@@ -369,10 +376,39 @@ class Emitter:
                 done.add(name)
                 yield "let", f"{self.local(loc.name)} = {self.ex(value)}"
 
+        self.known = {}
         for cond in a.pre:
             yield from need(ir.locals_of(cond))
             yield "pre", self.ex(cond)
+            self.learn(cond)   # what follows runs only where `cond` held
         yield from need(_effect_locals(a.effects, set()))
+
+    def learn(self, cond) -> None:
+        """Record the bounds a precondition puts on locals (`0 <= v < 14`), so that reads
+        and stores after it skip range checks it already made."""
+        if isinstance(cond, ir.BoolOp) and cond.op == "and":
+            for item in cond.items:
+                self.learn(item)
+            return
+        if not isinstance(cond, ir.Cmp):
+            return
+        for op, left, right in zip(cond.ops, cond.operands, cond.operands[1:]):
+            if isinstance(left, ir.Local) and isinstance(right, ir.Const):
+                local, c, op = left, int(right.value), op
+            elif isinstance(left, ir.Const) and isinstance(right, ir.Local):
+                local, c, op = right, int(left.value), _MIRROR.get(op)
+            else:
+                continue
+            lo, hi = self.known.get(local.name, (-math.inf, math.inf))
+            if op in ("<", "<="):
+                hi = min(hi, c - 1 if op == "<" else c)
+            elif op in (">", ">="):
+                lo = max(lo, c + 1 if op == ">" else c)
+            elif op == "==":
+                lo, hi = max(lo, c), min(hi, c)
+            else:
+                continue
+            self.known[local.name] = (lo, hi)
 
     def _new_state(self, a: GroundAction, indent: str) -> tuple[list[str], str]:
         """Lines that make the next state `n` and apply a's effects, and the expression of
@@ -386,7 +422,8 @@ class Emitter:
 
     def _function(self, header: str, body: list[str]) -> str:
         """A function whose body reads cells gets their expansion as its first line."""
-        prologue = ["    c = _cells(s)"] if self.compact and self.uses_cells else []
+        nv = self.L.grid_base   # inline `_cells(s)`: most states changed no cell
+        prologue = [f"    c = _S0 if len(s) == {nv} else _expand(s[{nv}:])"] if self.compact and self.uses_cells else []
         self.uses_cells = False
         return "\n".join([header] + prologue + body)
 

@@ -185,7 +185,9 @@ GENERATED_NAME = re.compile(r"(v|_t|T|apply_|why_)\d+\Z")
 ALLOWED_NAMES = {"def", "return", "if", "else", "elif", "not", "and", "or", "in", "for", "None", "True", "False",
                  "pass", "s", "n", "out", "append", "bytes", "bytearray", "range", "any", "all", "successors",
                  "goal", "failure", "SG", "_cell", "_set_cell", "_index", "_range", "ModelError",
-                 "c", "w", "_cells", "_merge"}   # compact states: expanded cells, cell writes
+                 "c", "w", "_cells", "_merge",   # compact states: expanded cells, cell writes
+                 "len", "_S0", "_expand",        # ... the start's cells, or a changed state's expanded
+                 "live", "t", "_live_slow"}      # successors for search: the next state, failing starts
 
 
 @pytest.mark.parametrize("name", shipped_dungeons())
