@@ -222,6 +222,7 @@ class Builder:
         self.ev = Evaluator(layout, self.group_of, self.domain)
         self.ev.group_members, self.ev.n_values = self.groups, n_values
         self.ops: dict = {}          # (pre, add, cost, action) -> None (ordered set)
+        self.live = None             # relaxed reachability of the operators built so far
         self.or_facts: dict = {}     # frozenset of minterms -> aux fact
         self.fired: dict = {}        # (action, residual effects) -> aux fact
         self.cond_cache: dict = {}   # residual condition -> its decision-tree leaves
@@ -279,7 +280,11 @@ class Builder:
     def op(self, pre, add, cost, action) -> None:
         add = tuple(sorted(set(add) - set(pre)))
         if add:
-            self.ops[(tuple(sorted(set(pre))), add, cost, action)] = None
+            key = (tuple(sorted(set(pre))), add, cost, action)
+            if key not in self.ops:
+                self.ops[key] = None
+                if self.live is not None:
+                    self.live.add(key[0], add)
 
     # ---- conditions ----------------------------------------------------------------------
     def clusters(self, conds, env, limit=COND_LIMIT):
@@ -323,22 +328,57 @@ class Builder:
         return [[frozenset(m) for m in p[2]] for p in parts]
 
     # ---- actions -----------------------------------------------------------------------
-    def build_action(self, index: int, contexts_left: list) -> None:
-        a = self.actions[index]
-        lets = {loc.name: value for loc, value in a.lets}
-        ctx_groups = sorted({self.group_of[v][0] for v in _context_vars(a) if v in self.group_of})
-        domains = [self.group_domains[g] for g in ctx_groups]
-        n = math.prod(len(d) for d in domains)
-        contexts_left[0] -= n
-        if contexts_left[0] < 0:
-            raise RelaxedTooBig(f"more than {MAX_CONTEXTS} action contexts")
-        for k, values in enumerate(itertools.product(*domains)):
-            if k % 256 == 0 and time.perf_counter() > self.deadline:
-                raise RelaxedTooBig("the time budget ran out while building the relaxed view")
-            pins = {}
-            for g, vals in zip(ctx_groups, values):
-                pins.update(zip(self.groups[g], vals))
-            self.build_context(index, a, lets, ctx_groups, values, pins)
+    def build_actions(self, init_facts) -> None:
+        """Every action in every context whose context facts are reachable in the relaxation
+        (lazy grounding, as Fast Downward's translator does): contexts are built as their
+        facts become reachable from the operators built so far, so a wall cell's position,
+        say, is never a context. Other contexts could never fire; dropping them leaves
+        what `_prune` keeps unchanged."""
+        live = self.live = _Reach(init_facts)
+        todo = []
+        for index in self.search:
+            a = self.actions[index]
+            lets = {loc.name: value for loc, value in a.lets}
+            ctx = sorted({self.group_of[v][0] for v in _context_vars(a) if v in self.group_of})
+            todo.append((index, a, lets, ctx))
+        value_of = {}
+        for g in {g for *_, ctx in todo for g in ctx}:
+            for v in self.group_domains[g]:
+                value_of[self.fact(("g", g), v)] = (g, v)
+        reached: dict = {g: [] for g, _ in value_of.values()}
+        built = 0
+        first = True
+        while True:
+            fresh: dict = {}
+            for f in live.take():
+                gv = value_of.get(f)
+                if gv is not None:
+                    fresh.setdefault(gv[0], []).append(gv[1])
+            if not fresh and not first:
+                return
+            old = {g: list(vs) for g, vs in reached.items()}
+            for g, vs in fresh.items():
+                reached[g].extend(vs)
+            for index, a, lets, ctx in todo:
+                if not ctx:
+                    combos = [()] if first else []
+                else:
+                    # Each combination with at least one new value, once: old values before
+                    # the first new position, new at it, any value after it.
+                    combos = itertools.chain.from_iterable(
+                        itertools.product(*([old[g] for g in ctx[:k]] + [fresh[ctx[k]]] + [reached[g] for g in ctx[k + 1:]]))
+                        for k in range(len(ctx)) if ctx[k] in fresh)
+                for values in combos:
+                    built += 1
+                    if built > MAX_CONTEXTS:
+                        raise RelaxedTooBig(f"more than {MAX_CONTEXTS} action contexts")
+                    if built % 256 == 0 and time.perf_counter() > self.deadline:
+                        raise RelaxedTooBig("the time budget ran out while building the relaxed view")
+                    pins = {}
+                    for g, vals in zip(ctx, values):
+                        pins.update(zip(self.groups[g], vals))
+                    self.build_context(index, a, lets, ctx, values, pins)
+            first = False
 
     def build_context(self, index, a, lets, ctx_groups, values, pins) -> None:
         cells: dict = {}
@@ -446,6 +486,42 @@ class Builder:
         return tuple(sorted(set(out)))
 
 
+class _Reach:
+    """Relaxed reachability from the start, kept up to date as operators are added."""
+
+    def __init__(self, init):
+        self.reached = set()
+        self.waiting: dict = {}     # fact -> operators still missing it: [count missing, adds]
+        self.fresh: list = []
+        self._fire(tuple(init))
+
+    def add(self, pre, add) -> None:
+        missing = [p for p in pre if p not in self.reached]
+        if not missing:
+            self._fire(add)
+            return
+        entry = [len(missing), add]
+        for p in missing:
+            self.waiting.setdefault(p, []).append(entry)
+
+    def _fire(self, add) -> None:
+        stack = [add]
+        while stack:
+            for f in stack.pop():
+                if f not in self.reached:
+                    self.reached.add(f)
+                    self.fresh.append(f)
+                    for entry in self.waiting.pop(f, ()):
+                        entry[0] -= 1
+                        if entry[0] == 0:
+                            stack.append(entry[1])
+
+    def take(self) -> list:
+        """The facts reached since the last call."""
+        out, self.fresh = self.fresh, []
+        return out
+
+
 def _component(effects, atom, ev) -> tuple:
     """The part of `effects` that may write `atom` (conditions kept, other writes dropped)."""
     out = []
@@ -464,11 +540,9 @@ def build(layout, actions, search, goal, reach, n_values, initial, time_limit: f
     start = time.perf_counter()
     b = Builder(layout, actions, search, goal, reach, n_values,
                 math.inf if time_limit is None else start + time_limit)
-    left = [MAX_CONTEXTS]
-    for i in search:
-        b.build_action(i, left)
-    goal_facts = b.build_goal()
     reader = StateReader(layout, b.groups, b.bases, b.strides, b.cell_base, n_values)
+    b.build_actions(reader.facts(initial))
+    goal_facts = b.build_goal()
     ops = list(b.ops)
     built = len(ops)
     ops = _prune(ops, reader.facts(initial), goal_facts, b.n_facts)
