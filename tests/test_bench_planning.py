@@ -38,3 +38,20 @@ def test_the_planning_benchmark_reports_coverage_and_checks_costs(tmp_path):
     assert costs == {"road-1": 2, "sokoban-corridor": 2}
     if available():
         assert all(p["cost_check"] == "ok" for p in report["ipc"]["problems"])
+
+
+def test_the_second_validator_replays_plans_on_fast_downwards_translation(tmp_path):
+    from bcc.pddl_io.fast_downward import available
+    if not available():
+        pytest.skip("Fast Downward is not installed (pip install '.[pddl]')")
+    bench = load_bench()
+    domain, problem = str(ROOT / "tests" / "pddl" / "road-domain.pddl"), str(ROOT / "tests" / "pddl" / "road-1.pddl")
+    cases = {"(drive a b)\n(drive b c)\n": "valid",                           # the optimum, by hand
+             "(drive a c)\n": "valid",                                        # dearer, still a plan
+             "(drive a b)\n": "the goal does not hold",
+             "(drive b c)\n(drive a b)\n": "step 1 (drive b c) is not applicable",
+             "(fly a c)\n": "not checked"}
+    for text, verdict in cases.items():
+        plan = tmp_path / "plan"
+        plan.write_text(text)
+        assert bench.sas_replay(domain, problem, str(plan)).startswith(verdict), text
