@@ -188,16 +188,31 @@ def _chain(tree: Tree) -> tuple[list, list] | None:
     return items[::-1], ops[::-1]
 
 
+KEEP_SHAPE = 16   # chains up to this long keep the parser's left-nested shape
+
+
 def _balanced(rule: str, items: list, ops: list):
-    """A balanced tree over the items, split at the middle operator (depth log2 of their number)."""
-    if len(items) == 1:
-        return items[0]
-    mid = (len(items) + 1) // 2  # left-heavy: short chains keep their left-nested shape
-    left, right = _balanced(rule, items[:mid], ops[:mid - 1]), _balanced(rule, items[mid:], ops[mid:])
-    if rule == "binop":
-        return ast.BinOp(str(ops[mid - 1]), left, right, _pos(ops[mid - 1]))
-    node = ast.And if rule == "and_" else ast.Or
-    return node(left, right, left.pos)
+    """The tree of a chain: left-nested as written (`a and b and c` is and(and(a, b), c))
+    up to KEEP_SHAPE operands, so ordinary expressions keep their shape; a longer chain is
+    split at its middle operator, so its depth grows as log2 of its length."""
+    def join(op, left, right):
+        if rule == "binop":
+            return ast.BinOp(str(op), left, right, _pos(op))
+        return (ast.And if rule == "and_" else ast.Or)(left, right, left.pos)
+    if len(items) <= KEEP_SHAPE:
+        node = items[0]
+        for op, item in zip(ops, items[1:]):
+            node = join(op, node, item)
+        return node
+    mid = (len(items) + 1) // 2
+    return join(ops[mid - 1], _balanced(rule, items[:mid], ops[:mid - 1]), _balanced(rule, items[mid:], ops[mid:]))
+
+
+def _chain_depth(n: int) -> int:
+    """The nesting `_balanced` adds over its deepest operand, for n operands."""
+    if n <= KEEP_SHAPE:
+        return n - 1
+    return 1 + _chain_depth((n + 1) // 2)
 
 
 def _build(tree: Tree):
@@ -231,7 +246,7 @@ def _build(tree: Tree):
             tree_node, ops, n = node
             args = values[len(values) - n:]
             del values[len(values) - n:]
-            depth = max(d for _, d in args) + (n - 1).bit_length()
+            depth = max(d for _, d in args) + _chain_depth(n)
             value = _balanced(tree_node.data, [v for v, _ in args], ops)
             where = tree_node.meta
         if depth > MAX_EXPRESSION_DEPTH:

@@ -20,6 +20,7 @@ from .base import BUDGET_WORDS, Budget, Result
 from .memory import arm_cap, disarm_cap, peak_rss_mb
 
 GRACE_SECONDS = 0.5   # the cooperative check normally stops first; the timer only backs it up
+REPEAT_SECONDS = 0.25  # how often the timer fires again once the limit is spent
 
 
 class BudgetExceeded(Exception):
@@ -39,7 +40,9 @@ def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
         def expire(signum, frame):
             raise BudgetExceeded("time_limit")
         old_handler = signal.signal(signal.SIGALRM, expire)
-        signal.setitimer(signal.ITIMER_REAL, budget.time_limit + grace)
+        # Repeating: a raise inside a gc callback or a __del__ is printed and dropped by
+        # Python, so the timer fires again until the limit really ends the command.
+        signal.setitimer(signal.ITIMER_REAL, budget.time_limit + grace, REPEAT_SECONDS)
     old_cap = arm_cap(budget.max_memory_mb) if budget.max_memory_mb is not None else None
     try:
         yield

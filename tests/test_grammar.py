@@ -72,6 +72,21 @@ def test_comparison_chains(text, tree):
     assert E(text) == tree
 
 
+def test_chains_keep_their_shape_and_only_long_ones_are_balanced():
+    """`a or b or c or d` and its fully bracketed form are the same left-nested tree (a
+    CI run of the round-trip property found a 4-term chain rebuilt as (a or b) or (c or d));
+    only chains longer than KEEP_SHAPE are balanced, to bound their depth."""
+    from bcc.compiler.parse import KEEP_SHAPE
+    left_nested = Or(Or(Or(a, b), c), d)
+    assert E("a or b or c or d") == E("(((a) or (b)) or (c)) or (d)") == left_nested
+    assert E("a + b + c + d") == BinOp("+", BinOp("+", BinOp("+", a, b), c), d)
+
+    def depth(n):
+        return 1 + max(depth(n.left), depth(n.right)) if isinstance(n, (And, BinOp)) else 0
+    long = E(" and ".join(["a"] * (4 * KEEP_SHAPE)))
+    assert depth(long) < 2 * KEEP_SHAPE   # log2(4) levels of splitting over chains of at most KEEP_SHAPE
+
+
 @pytest.mark.parametrize("text,tree", [
     ("a + b * c", BinOp("+", a, BinOp("*", b, c))),
     ("a * b + c", BinOp("+", BinOp("*", a, b), c)),
