@@ -17,12 +17,14 @@ add nothing the goal needs, are dropped (relevance, as pyperplan and Fast Downwa
 """
 from __future__ import annotations
 
+import bisect
 import itertools
 import math
 import time
 from dataclasses import dataclass, field
 
 from . import ir
+from .relaxed_last import last_step_operators
 from .relaxed_eval import BAD, CellAtom, Drop, Evaluator, Fail, TooBig, conjuncts, residual, residual_effects
 
 MAX_GROUP = 4096        # largest product of value ranges a group of variables may have
@@ -48,6 +50,7 @@ class RelaxedTask:
     labels: list                     # a readable name per fact (debugging, tests)
     reader: "StateReader"
     stats: dict = field(default_factory=dict)
+    guide: "RelaxedTask | None" = None   # the goal reached by a last action (relaxed_last.py), for hadd/hff
 
     def state_facts(self, state) -> list:
         return self.reader.facts(state)
@@ -225,6 +228,7 @@ class Builder:
         self.live = None             # relaxed reachability of the operators built so far
         self.or_facts: dict = {}     # frozenset of minterms -> aux fact
         self.fired: dict = {}        # (action, residual effects) -> aux fact
+        self.fired_values: dict = {}  # fired fact -> (the atom it writes, the facts it may add)
         self.cond_cache: dict = {}   # residual condition -> its decision-tree leaves
         self.written_cache: dict = {}  # residual top-level effect -> atoms it may write
 
@@ -254,6 +258,18 @@ class Builder:
             z, x = divmod(k, self.L.width)
             self.labels[f] = f"cell({x}, {self.L.layers[layer]}, {z})={value}"
         return f
+
+    def atom_of(self, f: int):
+        """(atom, facts it may take) for a fact an operator adds: a group's or a cell's
+        fact itself, or a fired fact's candidate values; None for other auxiliary facts."""
+        if f < self.cell_base:
+            return ("g", bisect.bisect_right(self.bases, f) - 1), {f}
+        if f < self.cell_base + len(self.L.layers) * self.area * self.n_values:
+            return ("c", (f - self.cell_base) // self.n_values), {f}
+        return self.fired_values.get(f)
+
+    def or_minterms(self) -> dict:
+        return {f: [self.minterm_facts(m) for m in key] for key, f in self.or_facts.items()}
 
     def new_fact(self, label: str) -> int:
         f = self.n_facts
@@ -465,10 +481,13 @@ class Builder:
         """Zero-cost operators, one per old value of the written atom: `fired` and
         atom = old add every value the effects may give it (conditions that need other
         atoms count as true and false: an over-approximation)."""
+        values = self.fired_values[fired] = (atom, set())
         for old in self.domain(atom):
             new = self.ev.candidates(effects, {atom: old}, atom, {})
             if new:
-                self.op((fired, self.fact(atom, old)), tuple(self.fact(atom, v) for v in new), 0, -1)
+                adds = tuple(self.fact(atom, v) for v in new)
+                values[1].update(adds)
+                self.op((fired, self.fact(atom, old)), adds, 0, -1)
 
     def build_goal(self):
         try:
@@ -543,11 +562,18 @@ def build(layout, actions, search, goal, reach, n_values, initial, time_limit: f
     reader = StateReader(layout, b.groups, b.bases, b.strides, b.cell_base, n_values)
     b.build_actions(reader.facts(initial))
     goal_facts = b.build_goal()
-    ops = list(b.ops)
-    built = len(ops)
-    ops = _prune(ops, reader.facts(initial), goal_facts, b.n_facts)
+    all_ops = list(b.ops)
+    built = len(all_ops)
+    init_facts = reader.facts(initial)
+    last = last_step_operators(all_ops, goal_facts, b.atom_of, b.or_minterms(), b.new_fact) if goal_facts else None
+    ops = _prune(all_ops, init_facts, goal_facts, b.n_facts)
+    labels = [b.labels.get(f, f"#{f}") for f in range(b.n_facts)]
     task = RelaxedTask(b.n_facts, [o[0] for o in ops], [o[1] for o in ops], [o[2] for o in ops],
-                       [o[3] for o in ops], goal_facts, [b.labels.get(f, f"#{f}") for f in range(b.n_facts)], reader)
+                       [o[3] for o in ops], goal_facts, labels, reader)
+    if last is not None:
+        guide_ops = _prune(all_ops + last[0], init_facts, last[1], b.n_facts)
+        task.guide = RelaxedTask(b.n_facts, [o[0] for o in guide_ops], [o[1] for o in guide_ops],
+                                 [o[2] for o in guide_ops], [o[3] for o in guide_ops], last[1], labels, reader)
     task.stats = {"facts": b.n_facts, "operators_built": built, "operators": len(ops),
                   "groups": [[v.label for v in g] for g in b.groups],
                   "seconds": round(time.perf_counter() - start, 3)}

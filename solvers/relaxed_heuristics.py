@@ -41,6 +41,11 @@ class Relaxed:
             for f in add:
                 self.achievers[f].append(i)
         self.preferred: frozenset = frozenset()
+        # hadd and hff ask `guide`, the view whose goal is reached by a last action
+        # (compiler/relaxed_last.py), when there is one; a state where the goal holds needs
+        # no last action, so there `holds` (the model's goal test) answers 0.
+        self.guide = None
+        self.holds = None
 
     # ---- exploration -------------------------------------------------------------------------
     def explore(self, init, costs, additive: bool, stop_at_goal: bool):
@@ -109,12 +114,23 @@ class Relaxed:
         return self.goal_cost(cost, False)
 
     def hadd(self, state) -> float:
+        if self.guide is not None:
+            return self.guide.hadd(state)
+        if self.holds is not None and self.holds(state):
+            return 0
         cost, _, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
         return self.goal_cost(cost, True)
 
     def hff(self, state) -> float:
         """Relaxed plan cost; sets `self.preferred` to the grounded actions of the plan's
         operators that apply in `state` (all preconditions reached at cost 0)."""
+        if self.guide is not None:
+            h = self.guide.hff(state)
+            self.preferred = self.guide.preferred
+            return h
+        if self.holds is not None and self.holds(state):
+            self.preferred = frozenset()
+            return 0
         cost, sup, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
         if self.goal is None or any(cost[g] == INF for g in self.goal):
             self.preferred = frozenset()
@@ -227,4 +243,7 @@ def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:
     if getattr(task, "heuristics", None) is None:
         task.reader.to_dense = getattr(model, "dense", None)  # compact states (issue 18) read densely
         task.heuristics = Relaxed(task)
+        if getattr(task, "guide", None) is not None:
+            task.heuristics.guide = Relaxed(task.guide)
+            task.heuristics.guide.holds = model.is_goal
     return task.heuristics

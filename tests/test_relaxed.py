@@ -168,6 +168,34 @@ def test_greedy_evaluation_modes(tmp_path, monkeypatch, evaluation):
         assert calls[0] > result.expanded + 1
 
 
+def test_last_step_view_sees_the_carry(tmp_path):
+    """hff and hadd read the view whose goal is reached by a last action
+    (compiler/relaxed_last.py). Carrying the stone into the blue room: the plain delete
+    relaxation empties the hand anywhere (its relaxed plan ignores the walk), the
+    last-step view must place it in the blue room. Once the stone is in hand, what is
+    left (walk, select, place) has no deletes that matter, so its hff is the exact cost
+    to go (from the exhaustive backward search); at the goal it is 0."""
+    model = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
+    r = relaxed_of(model)
+    assert r.guide is not None and r.task.guide.goal != r.task.goal
+    order, dist = exact_distances(model)
+    plan = get_solver("bfs")(model, BUDGET).plan
+    guide, state, carrying = r.guide, model.initial, False
+    for name in [None] + plan:
+        if name is not None:
+            state = model.apply(model.action_index(name), state)
+            carrying = carrying or name == "destroy_block"
+        h = r.hff(state)
+        r.guide = None
+        plain = r.hff(state)
+        r.guide = guide
+        assert h >= plain
+        if carrying:
+            assert h == dist[state], (name, h, dist[state])
+    assert model.is_goal(state) and r.hff(state) == r.hadd(state) == 0
+    assert r.hff(model.initial) > r.lmcut(model.initial)
+
+
 def test_relaxed_view_facts_and_goal():
     """The grid's goal is the agent on the gold at (1, 1): one fact of the merged (x, z) group."""
     model = compile_dungeon("grid")
