@@ -98,6 +98,7 @@ class Domain:
     failure: Expr | None
     binding: YMap                         # the `dungeon:` section, read by dungeon.py
     source: YMap
+    start: Expr | None = None             # `dungeon.start`, parsed here (a cached domain needs no parser)
 
 
 def resolve_domain_path(ref: str, relative_to: Path | None = None) -> Path:
@@ -169,12 +170,12 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
                      lambda section, name: _load_action(section, name, names_in_use), base)
     failure = _expr(data, "failure") if "failure" in data else (base.failure if base else None)
     binding = _merge_binding(data, base)
-    _check_binding(data, binding, classes)
+    start = _check_binding(data, binding, classes)
     _ident(data, "domain", data["domain"], "the domain name")
     if "description" in data:
         check_text(data, "description", data["description"], "the description")
     return Domain(str(data["domain"]), str(path), str(data.get("description", "")).strip(), enums,
-                  constants, classes, functions, actions, failure, binding, data)
+                  constants, classes, functions, actions, failure, binding, data, start)
 
 
 def _merge(what: str, data, key: str, inherited: dict, load, base) -> dict:
@@ -231,14 +232,15 @@ def _load_function(section, name, names_in_use) -> FunctionDef:
     return FunctionDef(name, [], _expr(section, name))  # `name: expression`: no parameters
 
 
-def _check_binding(data, b, classes) -> None:
-    """The `dungeon:` section names classes and attributes; check them all here, with positions."""
+def _check_binding(data, b, classes) -> Expr | None:
+    """The `dungeon:` section names classes and attributes; check them all here, with
+    positions. Returns its `start` condition, parsed."""
     if not isinstance(b, YMap):
         raise error_at(data, "dungeon", "`dungeon` maps parts of a dungeon file (grid, agent, ...) to classes")
     check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms", "lists", "start"}, set(),
                "the `dungeon` section")
-    if "start" in b:  # a condition every dungeon's start must meet, e.g. the agent's cell is free
-        _expr(b, "start")
+    # a condition every dungeon's start must meet, e.g. the agent's cell is free
+    start = _expr(b, "start") if "start" in b else None
 
     def cls(container, key):
         name = container[key]
@@ -297,6 +299,7 @@ def _check_binding(data, b, classes) -> None:
             if not isinstance(name, str) or name not in rfields:
                 raise error_at(required, i, f"`required` lists fields of `dungeon.{part}`; {shorten(repr(name))} "
                                             f"is not one{suggest(str(name), rfields)}")
+    return start
 
 
 def _expr(container, key, effects: bool = False) -> Expr:

@@ -142,12 +142,10 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
 def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:
     """The domain's `dungeon.start` condition (e.g. "the agent's cells are free") must hold
     in the dungeon's start, or the agent would begin stuck inside a wall with no hint why."""
-    from .domain import _expr
     from .source import error_at
-    binding = dungeon.domain.binding
-    if "start" not in binding:
+    src = dungeon.domain.start
+    if src is None:
         return
-    src = _expr(binding, "start")
     space = dict(ns)
     exec(compile(emitter.predicate_source("start_ok", g.bool_expr(src.node, Ctx(src))), "<bcc start>", "exec"), space)
     if space["start_ok"](initial):

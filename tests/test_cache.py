@@ -89,3 +89,18 @@ def test_xdg_cache_home_is_honoured(tmp_path, monkeypatch):
     monkeypatch.delenv("BCC_NO_CACHE", raising=False)
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
     assert cache.cache_dir() == tmp_path / "xdg" / "bcc"
+
+
+def test_a_warm_solve_does_not_load_lark(cache_dir):
+    """Everything parsed (the domain's expressions, its `dungeon.start` condition) is in the
+    entry, so a warm `bcc solve` needs no parser: of two processes solving bridge, only
+    the first imports lark."""
+    import subprocess
+    import sys
+    probe = ("import sys; from bcc.cli import main\n"
+             "try:\n    main(['solve', 'bridge'])\nexcept SystemExit:\n    pass\n"
+             "print('lark' in sys.modules, file=sys.stderr)")
+    runs = [subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120,
+                           env=dict(os.environ, BCC_CACHE_DIR=str(cache_dir)))
+            for _ in range(2)]
+    assert [r.stderr.strip().splitlines()[-1] for r in runs] == ["True", "False"], runs[1].stderr
