@@ -133,7 +133,7 @@ class Model:
     grid: Grid
     position: tuple                            # agent position per axis: (state index, lo) or None if static
     position_static: tuple                     # the static axes' values (None for dynamic ones)
-    goal_positions: "numpy.ndarray | None"          # agent positions where the goal may hold, shape (k, 3)
+    goal_positions: tuple | None               # agent positions (x, y, z) where the goal may hold
     report: dict = field(default_factory=dict) # compile statistics for `bcc compile`
     source: str = ""                           # the generated Python, for the curious
     display: dict = field(default_factory=dict)  # for drawing states (render.py)

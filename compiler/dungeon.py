@@ -9,7 +9,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
 
 from ..errors import BccError
 from .domain import Domain, Expr, _expr, is_file, load_domain, resolve_domain_path
@@ -34,7 +33,7 @@ class Dungeon:
     depth: int
     height: int
     grid_class: str
-    grid: np.ndarray                               # [y, z, x] dense value indices
+    grid: bytes                                    # dense value indices, [y][z][x] (index (y*depth + z)*width + x)
     objects: dict[str, tuple[str, dict]]           # named objects: name -> (class, attribute values)
     keyed: dict[str, dict[tuple, dict]] = field(default_factory=dict)  # class -> key -> attribute values
     goal: Expr | None = None
@@ -146,13 +145,14 @@ class _Builder:
         if width * depth * height > MAX_GRID_CELLS:
             raise error_at(data, "map", f"the dungeon has {width * depth * height:,} cells ({width} x {depth} "
                                         f"x {height}); at most {MAX_GRID_CELLS:,}")
-        grid = np.full((height, depth, width), self.default_index, dtype=np.uint8)
+        grid = bytearray([self.default_index]) * (height * depth * width)
         for z, row in enumerate(rows):
             for x, ch in enumerate(row):
                 column = legend[ch]
                 if len(column) > height:
                     raise error_at(data["legend"], ch, f"the column {ch!r} has {len(column)} blocks but `height` is {height}")
-                grid[:len(column), z, x] = column
+                for y, value in enumerate(column):
+                    grid[(y * depth + z) * width + x] = value
         if "dungeon" in data:
             name = check_name(data, "dungeon", data["dungeon"], "the dungeon name")
         else:
@@ -161,7 +161,7 @@ class _Builder:
             check_text(data, "description", data["description"], "the description")
         dungeon = Dungeon(name, str(self.path),
                           str(data.get("description", "")).strip(), d, width, depth, height,
-                          gclass.name, grid, {})
+                          gclass.name, bytes(grid), {})
         dungeon.legend_columns = legend
         self.unused_legend(dungeon, rows)
         self.agent(dungeon, rows, legend, map_origin)

@@ -121,10 +121,9 @@ def make_layout(grounder: Grounder, d: Dungeon, dynamic: set, grid_layers: set[i
                 for a in attrs:
                     add(name, cname, a)
     layers = tuple(sorted(range(d.height) if grid_layers is None else grid_layers))
-    import numpy as np
-    default = int(np.uint8(grounder.value_const(d.grid_class, _value_attr(d), _default(d)).value))
+    default = int(grounder.value_const(d.grid_class, _value_attr(d), _default(d)).value) & 255   # a cell is a byte
     return Layout(slots, {s.var: s for s in slots}, keyed, d.width, d.depth, d.height, len(slots), layers,
-                  d.grid.tobytes(), default)
+                  bytes(d.grid), default)
 
 
 def _value_attr(d: Dungeon) -> str:

@@ -12,7 +12,6 @@ import functools
 import itertools
 from pathlib import Path
 
-import numpy as np
 
 from ..errors import BccError
 from ..model import Grid, Model, Variable
@@ -267,7 +266,7 @@ def _goal_positions(an: Analysis, reach, goal_ir, position, static_pos, position
         sets.update({var: frozenset({v}) for var, dyn, v in zip(position_vars, position, point) if dyn is not None})
         if maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal_ir)):
             found.append(point)
-    return np.array(found, dtype=np.int64).reshape(-1, len(position))
+    return tuple(found)
 
 
 def _display(d: Dungeon, layout) -> dict:

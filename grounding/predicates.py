@@ -19,7 +19,7 @@ class Predicates:
     """Goal expressions of one dungeon -> (state -> bool), plus a cheap satisfiability test."""
 
     def __init__(self, model: Model, dungeon_ref: str | Path):
-        from .. import compiler as c
+        from ..compiler import pipeline as c   # the compiler's own passes, reused
         from ..compiler.emit import Emitter
         from ..compiler.ground import Grounder
         from ..compiler.layout import make_layout

@@ -143,12 +143,11 @@ def _explore(model: Model, limit: int) -> list[bytes]:
 
 def _present_values(dungeon) -> frozenset:
     """Grid value names present in the dungeon: in the map, or held by keyed objects (inventory)."""
-    import numpy as np
     dom = dungeon.domain
     cdef = dom.classes[dungeon.grid_class]
     attr = next(a for a in cdef.attrs if a not in cdef.key)
     enum = dom.enums[cdef.attrs[attr].type]
-    names = {enum.values[int(v)] for v in np.unique(dungeon.grid)}
+    names = {enum.values[v] for v in set(dungeon.grid)}
     for objects in dungeon.keyed.values():
         for values in objects.values():
             names.update(v for v in values.values() if isinstance(v, str) and v in enum.values)

@@ -27,29 +27,49 @@ def manhattan(model: Model):
     if len(goals) == 0:
         return lambda state: math.inf  # the goal holds at no position: nothing can reach it
     # One table over the dynamic axes' ranges: h = table[flattened position].
-    import numpy as np   # here, not at the top: models with no grid (PDDL) never load it
     by_index = {v.index: v for v in model.variables}
     ranges = [(index, lo, by_index[index].hi - lo + 1) for _, (index, lo) in dyn]
-    grids = np.meshgrid(*[np.arange(lo, lo + n) for _, lo, n in ranges], indexing="ij")
-    points = np.stack([g.ravel() for g in grids], axis=1)              # (P, dims)
-    static_cost = np.zeros(len(goals), dtype=np.int64)
-    for axis, value in enumerate(model.position_static):
-        if value is not None:
-            static_cost += np.abs(goals[:, axis] - value)
-    dyn_goals = goals[:, [axis for axis, _ in dyn]]                     # (k, dims)
-    dist = np.abs(points[:, None, :] - dyn_goals[None, :, :]).sum(axis=2) + static_cost[None, :]
-    table = tuple(int(v) for v in dist.min(axis=1))
-    if len(ranges) == 2:
-        (i0, _, _), (i1, _, n1) = ranges  # the common case, without a loop
-        return lambda s: table[s[i0] * n1 + s[i1]]
+    sizes = [n for _, _, n in ranges]
     strides = []
     acc = 1
-    for _, _, n in reversed(ranges):
+    for n in reversed(sizes):
         strides.append(acc)
         acc *= n
     strides.reverse()
+    seeds: dict = {}
+    for goal in goals:
+        static_cost = sum(abs(goal[axis] - value) for axis, value in enumerate(model.position_static)
+                          if value is not None)
+        flat = sum((goal[axis] - lo) * st for (axis, _), (_, lo, _), st in zip(dyn, ranges, strides))
+        seeds[flat] = min(seeds.get(flat, math.inf), static_cost)
+    table = tuple(_l1_distances(seeds, sizes, strides))
+    if len(ranges) == 2:
+        (i0, _, _), (i1, _, n1) = ranges  # the common case, without a loop
+        return lambda s: table[s[i0] * n1 + s[i1]]
     idx = [(i, st) for (i, _, _), st in zip(ranges, strides)]
     return lambda s: table[sum(s[i] * st for i, st in idx)]
+
+
+def _l1_distances(seeds: dict, sizes: list, strides: list) -> list:
+    """min over seeds (flat index -> cost) of cost + the L1 distance, for every point of the
+    box `sizes`: the separable distance transform, a forward and a backward sweep along
+    each axis in turn (linear in the box, without numpy)."""
+    total = math.prod(sizes)
+    d = [math.inf] * total
+    for i, c in seeds.items():
+        d[i] = c
+    for n, st in zip(sizes, strides):
+        for first in range(total):
+            if (first // st) % n:
+                continue   # not the first point of a line along this axis
+            last = first + (n - 1) * st
+            for i in range(first + st, last + 1, st):
+                if d[i - st] + 1 < d[i]:
+                    d[i] = d[i - st] + 1
+            for i in range(last - st, first - 1, -st):
+                if d[i + st] + 1 < d[i]:
+                    d[i] = d[i + st] + 1
+    return [int(v) if v != math.inf else v for v in d]
 
 
 def pdb(model: Model):

@@ -52,12 +52,12 @@ def test_goal_positions_are_the_gold_cells_only():
     # Gold is not placeable, so the only cell where agentOnBlock(agent, gold) can hold is
     # the one gold block at (5, 0, 5), the agent standing on it at y = 1.
     m = compiled("bridge")
-    assert m.goal_positions.tolist() == [[5, 1, 5]]
+    assert [list(p) for p in m.goal_positions] == [[5, 1, 5]]
 
 
 def test_room_goal_positions_are_strictly_inside():
     m = compiled("four_rooms", "agentInRoom(agent, orange)")
-    cells = {(x, z) for x, _, z in m.goal_positions.tolist()}
+    cells = {(x, z) for x, _, z in [list(p) for p in m.goal_positions]}
     assert cells == {(x, z) for x in range(7, 10) for z in range(1, 4)}
 
 
@@ -65,7 +65,7 @@ def test_placeable_blocks_count_as_possible_goal_cells():
     # A stone can be placed into lava, so agentOnBlock(agent, burlap_stone) may hold on
     # any lava cell as well as where stones lie.
     m = compiled("bridge", "agentOnBlock(agent, burlap_stone)")
-    cells = {(x, z) for x, _, z in m.goal_positions.tolist()}
+    cells = {(x, z) for x, _, z in [list(p) for p in m.goal_positions]}
     assert {(3, z) for z in range(1, 6)} <= cells
 
 

@@ -100,7 +100,8 @@ def test_save_and_load_states_only_actions_only_and_both(tmp_path):
     (tmp_path / "a.json").write_text(json.dumps(only_actions))
     assert Demonstration.load(tmp_path / "a.json", m).states == demo.states
 
-    wrong = dict(data, actions=["rotate_right"] + plan[1:])
+    other = "rotate_left" if plan[0] != "rotate_left" else "rotate_right"   # any plan's first step differs
+    wrong = dict(data, actions=[other] + plan[1:])
     (tmp_path / "w.json").write_text(json.dumps(wrong))
     with pytest.raises(BccError, match="disagree at step 1"):
         Demonstration.load(tmp_path / "w.json", m)
