@@ -340,20 +340,18 @@ def effective_effects(pre, effects: list) -> list:
     """The effects that can change the state, as Fast Downward's translator keeps them.
 
     An unconditional add beats any delete of the same atom (PDDL: deletes apply first);
-    an add of an atom the precondition requires, or a delete of one it forbids, changes
-    nothing. Without this, `(not (channel-free ?l)) (channel-free ?l)` would count as
-    writing `channel-free`, and backward relevance would keep every action doing it."""
+    an add of an atom the precondition requires (and no effect deletes), or a delete of
+    one it forbids, changes nothing. Without this, `(not (channel-free ?l)) (channel-free ?l)`
+    would count as writing `channel-free`, and backward relevance would keep every action
+    doing it."""
     conj = [pre] if not (isinstance(pre, tuple) and pre[0] == "and") else list(pre[1])
     true = {c for c in conj if isinstance(c, int)}
     false = {c[1] for c in conj if isinstance(c, tuple) and c[0] == "not" and isinstance(c[1], int)}
     added = {atom for cond, atom, add in effects if add and cond == TRUE}
-    out = []
-    for cond, atom, add in effects:
-        if add and atom in true:
-            continue
-        if not add and (atom in false or atom in added):
-            continue
-        out.append((cond, atom, add))
+    effects = [(cond, atom, add) for cond, atom, add in effects if add or not (atom in false or atom in added)]
+    deleted = {atom for cond, atom, add in effects if not add}
+    # an add of a required atom that a (conditional) delete may clear restores it: it stays
+    out = [(cond, atom, add) for cond, atom, add in effects if not (add and atom in true and atom not in deleted)]
     return list(dict.fromkeys(out))
 
 

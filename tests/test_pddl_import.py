@@ -258,3 +258,20 @@ def test_effects_that_change_nothing_neither_keep_atoms_nor_actions(tmp_path):
     assert sorted(a for a in model.action_names if a.startswith("(send")) == ["(send c)"]
     result = get_solver("bfs")(model, Budget())
     assert result.solved and result.cost == 4
+
+
+def test_a_conditional_add_that_restores_a_deleted_precondition_is_kept(tmp_path):
+    # `toggle` requires (on), deletes it, and adds it back only when (keep) holds (which
+    # `forget` can clear, so it is no constant). By hand: the goal (lit) needs `light`, with
+    # (on) and (seen), and only `toggle` gives (seen): toggle (keep holds, so on stays), light
+    # = 2. Dropping the conditional add (its atom is required) would leave (on) false after
+    # toggle, and no plan would exist.
+    (tmp_path / "d.pddl").write_text("""(define (domain t) (:requirements :conditional-effects)
+      (:predicates (on) (keep) (seen) (lit))
+      (:action toggle :precondition (on) :effect (and (not (on)) (seen) (when (keep) (on))))
+      (:action light :precondition (and (on) (seen)) :effect (lit))
+      (:action forget :precondition (keep) :effect (not (keep))))""")
+    (tmp_path / "p.pddl").write_text("(define (problem p) (:domain t) (:init (on) (keep)) (:goal (lit)))")
+    model = import_pddl(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl"))
+    result = get_solver("bfs")(model, Budget())
+    assert result.solved and result.cost == 2 and result.plan == ["(toggle)", "(light)"]
