@@ -16,8 +16,8 @@ tasks; a word crossed with `blockInRoom:blue` is what IBM Model 2 calls t(word |
 Because task features are atoms and their parts, a model trained in one dungeon scores
 the tasks of another.
 
-Training maximises the conditional log-likelihood with an L2 penalty by full-batch
-gradient steps (Adam), numpy only. A pair whose task is latent (inferred from a
+Training maximises the conditional log-likelihood with an L2 penalty to convergence
+(L-BFGS, lbfgs.py), numpy only. A pair whose task is latent (inferred from a
 demonstration: several weighted explanations) contributes log sum_{t in explanations}
 weight(t) P(t | command) -- EM's objective, differentiated directly.
 """
@@ -30,13 +30,13 @@ from collections import Counter
 import numpy as np
 
 from ..errors import BccError
+from .lbfgs import minimise
 from .model_file import JsonModelFile
 from .text import Speller, words
 
 FORMAT = "bcc-loglinear/1"
 L2 = 0.005         # penalty per weight (on the mean log-likelihood): tuned by cross-validation
-EPOCHS = 150
-RATE = 0.1
+ITERATIONS = 200  # L-BFGS iterations at most (it stops once the objective no longer falls)
 MIN_COUNT = 2      # training commands a feature must occur in
 TAIL = 4           # words at the end of a command tagged as such
 ATOM = re.compile(r"(\w+)\(([^)]*)\)")
@@ -127,7 +127,7 @@ class LogLinear(JsonModelFile):
 
     # ---- training ----------------------------------------------------------------------
     @classmethod
-    def train(cls, examples: list, epochs: int = EPOCHS, l2: float = L2) -> LogLinear:
+    def train(cls, examples: list, iterations: int = ITERATIONS, l2: float = L2) -> LogLinear:
         """`examples`: (command text, candidate task texts, {task text: weight}) -- the weights of
         the pair's task (one task weighted 1 when known, a demonstration's explanations when not);
         every weighted task must be among the candidates."""
@@ -172,25 +172,25 @@ class LogLinear(JsonModelFile):
                     if t in pos and w > 0:
                         prior[r, pos[t]] = w
             blocks.append((np.array(members), T, np.log(np.maximum(prior, 1e-300)), prior > 0))
-        W = np.zeros((dc, dt))
-        m1, m2 = np.zeros_like(W), np.zeros_like(W)
-        lam = l2
-        for it in range(1, epochs + 1):
+
+        def value_and_gradient(x):
+            W = x.reshape(dc, dt)
             S = by_row.sum(W)
             G = np.zeros((n, dt))
+            loss = 0.0
             for members, T, log_prior, mask in blocks:
                 scores = S[members] @ T.T
                 scores -= scores.max(axis=1, keepdims=True)
-                p = np.exp(scores)
-                p /= p.sum(axis=1, keepdims=True)
+                e = np.exp(scores)
+                z = e.sum(axis=1, keepdims=True)
                 q = np.where(mask, np.exp(np.minimum(scores + log_prior, 700)), 0.0)
-                q /= np.maximum(q.sum(axis=1, keepdims=True), 1e-300)
-                G[members] = (p - q) @ T
-            grad = by_col.sum(G) / n + lam * W
-            m1 = 0.9 * m1 + 0.1 * grad
-            m2 = 0.999 * m2 + 0.001 * grad * grad
-            W -= RATE * (m1 / (1 - 0.9 ** it)) / (np.sqrt(m2 / (1 - 0.999 ** it)) + 1e-8)
-        return cls(command_index, task_index, W, speller, pairs=n, iterations=epochs)
+                zq = np.maximum(q.sum(axis=1, keepdims=True), 1e-300)
+                loss += float((np.log(z) - np.log(zq)).sum())
+                G[members] = (e / z - q / zq) @ T
+            grad = by_col.sum(G) / n + l2 * W
+            return loss / n + 0.5 * l2 * float((W * W).sum()), grad.ravel()
+        W = minimise(value_and_gradient, np.zeros(dc * dt), iterations=iterations).reshape(dc, dt)
+        return cls(command_index, task_index, W, speller, pairs=n, iterations=iterations)
 
     # ---- files -------------------------------------------------------------------------
     def to_json(self) -> dict:

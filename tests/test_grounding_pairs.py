@@ -113,7 +113,7 @@ def test_spelling_is_corrected_against_training_words():
 def test_model_file_round_trip(tmp_path):
     tasks = ["agentInRoom(agent, red)", "agentInRoom(agent, green)"]
     ex = [("go to red", tasks, {tasks[0]: 1.0}), ("go to green", tasks, {tasks[1]: 1.0})] * 3
-    model = LogLinear.train(ex, epochs=60)
+    model = LogLinear.train(ex, iterations=60)
     model.save(tmp_path / "m.json")
     again = LogLinear.load(tmp_path / "m.json")
     a, b = model.log_posterior("go to green", tasks), again.log_posterior("go to green", tasks)
