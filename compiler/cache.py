@@ -1,5 +1,6 @@
 """An on-disk cache of loaded dungeons (their YAML read and their domain's expressions
-parsed), so a warm `bcc solve` skips YAML, lark and the grammar.
+parsed), so a warm `bcc solve` skips YAML, lark and the grammar; and of costly analyses
+of a compiled model (`cached_analysis`: the pattern database).
 
 Like `.pyc` files: safe to delete, rebuilt when stale, never trusted across versions.
 An entry is found by the hash of bcc's version (a fingerprint of its code), Python's
@@ -100,6 +101,25 @@ def load_cached(path: Path, load):
         _RECORDING = outer
     if entry is not None and files and all(name and digest for name, digest in files):
         _write(entry, {"version": _version(), "files": files, "value": value})
+    return value
+
+
+def cached_analysis(kind: str, key: bytes, build):
+    """`build()`, or what an earlier build under the same key left in the cache: for
+    analyses of a compiled model that cost more than compiling it (the pattern database
+    of a big maze). `key` must hash everything the analysis is computed from; bcc's own
+    code is in every key already."""
+    folder = cache_dir()
+    if folder is None:
+        return build()
+    digest = hashlib.sha256(b"\0".join([_version().encode(), kind.encode(), key])).hexdigest()
+    entry = folder / kind / f"{digest[:40]}.pickle"
+    found = _read(entry)
+    if found is not None:
+        return found
+    value = build()
+    if value is not None:
+        _write(entry, {"version": _version(), "files": [], "value": value})
     return value
 
 

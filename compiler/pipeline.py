@@ -84,7 +84,14 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
 
     @functools.lru_cache(maxsize=1)
     def pattern_database():
-        return patterns.build(layout, actions, search, goal_ir, reach, n_values, position_vars, initial)
+        """Built once, and kept in the on-disk cache: on a big maze it costs more than the
+        whole compile. Its key: the generated code (actions, goal, layout), the grid, the
+        start and the pattern's candidates -- everything the build reads."""
+        from .cache import cached_analysis
+        key = b"\0".join([source.encode(), layout.static_grid, initial,
+                           repr((n_values, [v.label for v in position_vars], search)).encode()])
+        return cached_analysis("patterns", key, lambda: patterns.build(layout, actions, search, goal_ir, reach,
+                                                                       n_values, position_vars, initial))
 
     built: dict = {}
 

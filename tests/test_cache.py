@@ -104,3 +104,19 @@ def test_a_warm_solve_does_not_load_lark(cache_dir):
                            env=dict(os.environ, BCC_CACHE_DIR=str(cache_dir)))
             for _ in range(2)]
     assert [r.stderr.strip().splitlines()[-1] for r in runs] == ["True", "False"], runs[1].stderr
+
+
+def test_the_pattern_database_is_built_once_per_model(cache_dir, monkeypatch):
+    """A second compile of the same dungeon reads its pattern database from the cache; a
+    different goal (other generated code) builds its own."""
+    from bcc.compiler import patterns
+    calls = []
+    build = patterns.build
+    monkeypatch.setattr(patterns, "build", lambda *a, **k: calls.append(1) or build(*a, **k))
+    first = compile_dungeon("tough_maze").data("pattern_database")
+    again = compile_dungeon("tough_maze").data("pattern_database")
+    assert len(calls) == 1 and again == first
+    other = compile_dungeon("tough_maze", goal="agentOnBlock(agent, burlap_stone)").data("pattern_database")
+    assert len(calls) == 2 and other != first
+    monkeypatch.setenv("BCC_NO_CACHE", "1")
+    assert compile_dungeon("tough_maze").data("pattern_database") == first and len(calls) == 3
