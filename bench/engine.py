@@ -40,21 +40,32 @@ QUICK_GENERATED = [(11, 4, 2), (21, 6, 1), (65, 10, 1)]
 def run(cmd: list, env: dict | None = None, timeout: float = 600) -> dict:
     """One whole process: wall seconds, peak RSS (MB), exit code, stdout."""
     start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True)
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True,
+                            start_new_session=True)
     try:
         out, err = proc.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
-        proc.kill()
+        kill_group(proc)
         out, err = proc.communicate()
     wall = time.perf_counter() - start
     return {"wall": round(wall, 3), "code": proc.returncode, "stdout": out, "stderr": err}
+
+
+def kill_group(proc) -> None:
+    """Stop a timed process and its children (Fast Downward's driver runs the search as a
+    child, which would outlive the driver and keep a core busy through the next rows)."""
+    import signal
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
 
 
 def peak_of(cmd: list, env: dict | None = None, timeout: float = 600) -> dict:
     """`run`, with wait4's peak of the child (ru_maxrss: an upper bound, since it starts
     from this process's size at fork; the rows use the peak the child reports itself)."""
     start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, start_new_session=True)
     out_chunks = []
     deadline = start + timeout
     import selectors
@@ -65,7 +76,7 @@ def peak_of(cmd: list, env: dict | None = None, timeout: float = 600) -> dict:
     open_streams = 2
     while open_streams:
         if time.perf_counter() > deadline:
-            proc.kill()
+            kill_group(proc)
             break
         for key, _ in sel.select(timeout=0.5):
             data = os.read(key.fd, 65536)
