@@ -61,11 +61,12 @@ def kill_group(proc) -> None:
         pass
 
 
-def peak_of(cmd: list, env: dict | None = None, timeout: float = 600) -> dict:
+def peak_of(cmd: list, env: dict | None = None, timeout: float = 600, cwd: Path | None = None) -> dict:
     """`run`, with wait4's peak of the child (ru_maxrss: an upper bound, since it starts
     from this process's size at fork; the rows use the peak the child reports itself)."""
     start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, start_new_session=True)
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, start_new_session=True,
+                            cwd=cwd)
     out_chunks = []
     deadline = start + timeout
     import selectors
@@ -151,7 +152,8 @@ def bench_case(label: str, dungeon: str, work: Path, time_limit: float, fd: Path
                 plan = work / f"plan-{label}-{name}"
                 r = peak_of([sys.executable, str(fd), "--plan-file", str(plan), "--overall-time-limit",
                              f"{int(time_limit)}s", str(pddl / "domain.pddl"), str(pddl / "problem.pddl"),
-                             "--search", search], env=timed_env(), timeout=time_limit + 60)
+                             "--search", search], env=timed_env(), timeout=time_limit + 60,
+                            cwd=work)   # the translator writes output.sas into its working folder
                 row[name] = {"wall": r["wall"], "cpu": r["cpu"], "peak_mb": fd_peak_mb(r["stdout"]),
                              "cost": fd_cost(r["stdout"]),
                              "status": "solved" if r["code"] == 0 else f"exit {r['code']}"}
