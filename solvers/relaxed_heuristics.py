@@ -175,9 +175,8 @@ class Relaxed:
         goal, pre, add, pre_of, achievers = self.goal, self.pre, self.add, self.pre_of, self.achievers
         init_set = set(init)
         total = 0
+        cost, _, pcf = self.explore(init, costs, False, False)
         while True:
-            # Each round explores afresh: measured faster here than propagating the decreases.
-            cost, _, pcf = self.explore(init, costs, False, False)
             gmax = max(goal, key=cost.__getitem__)
             if cost[gmax] == INF:
                 return INF
@@ -232,6 +231,37 @@ class Relaxed:
             total += m
             for i in cut:
                 costs[i] -= m
+            self._decrease(cut, costs, cost, pcf)
+
+    def _decrease(self, cut, costs, cost, pcf) -> None:
+        """hmax after the cut's operators got cheaper (Fast Downward's incremental
+        exploration): fact costs only fall, so a Dijkstra from the facts the cut adds,
+        re-choosing an operator's costliest precondition when that one fell, gives the
+        hmax a fresh exploration would (up to ties)."""
+        pre, add, pre_of = self.pre, self.add, self.pre_of
+        heap = []
+        for i in cut:
+            v = (cost[pcf[i]] if pcf[i] >= 0 else 0) + costs[i]
+            for g in add[i]:
+                if v < cost[g]:
+                    cost[g] = v
+                    heap.append((v, g))
+        heapq.heapify(heap)
+        pop, push = heapq.heappop, heapq.heappush
+        while heap:
+            c, f = pop(heap)
+            if c > cost[f]:
+                continue
+            for i in pre_of[f]:
+                if pcf[i] != f:
+                    continue   # not the costliest precondition (or never applicable): unchanged
+                p = max(pre[i], key=cost.__getitem__)
+                pcf[i] = p
+                v = cost[p] + costs[i]
+                for g in add[i]:
+                    if v < cost[g]:
+                        cost[g] = v
+                        push(heap, (v, g))
 
 
 def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:
