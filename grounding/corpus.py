@@ -325,14 +325,14 @@ def corpus_model(split: str | None = "train"):
 
 
 def _shipped(key: str):
-    from .loglinear import LogLinear
+    from .models import from_json
     try:
         data = json.loads(MODEL.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
     if not isinstance(data, dict) or data.get("corpus") != key:
         return None
-    return LogLinear.from_json(data, str(MODEL))
+    return from_json(data, str(MODEL))
 
 
 def write_model(out: Path = CORPUS_DIR) -> None:

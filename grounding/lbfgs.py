@@ -12,13 +12,17 @@ import numpy as np
 MEMORY = 10
 
 
-def minimise(value_and_gradient, x0: np.ndarray, iterations: int = 200, tolerance: float = 1e-6) -> np.ndarray:
-    """The minimiser of a smooth function, from `x0` (1-d): `value_and_gradient(x) -> (f, grad)`."""
+def minimise(value_and_gradient, x0: np.ndarray, iterations: int = 200,
+             tolerance: float = 1e-6) -> tuple[np.ndarray, int]:
+    """(the minimiser of a smooth function from `x0` (1-d), the iterations it took):
+    `value_and_gradient(x) -> (f, grad)`."""
     x = x0.copy()
     f, g = value_and_gradient(x)
     steps: list = []    # (s, y, 1 / y.s) of the last MEMORY iterations
-    for _ in range(iterations):
+    done = 0
+    for done in range(1, iterations + 1):
         if np.abs(g).max() < tolerance:
+            done -= 1
             break
         d = _direction(g, steps)
         slope = g @ d
@@ -42,7 +46,7 @@ def minimise(value_and_gradient, x0: np.ndarray, iterations: int = 200, toleranc
             x, f, g = xn, fn, gn
             break
         x, f, g = xn, fn, gn
-    return x
+    return x, done
 
 
 def _direction(g: np.ndarray, steps: list) -> np.ndarray:

@@ -12,7 +12,7 @@ import time
 from ..errors import BccError
 from .demonstration import Demonstration
 from .infer import explanations
-from .loglinear import LogLinear
+from .ensemble import Ensemble
 from .tasks import TaskSpace
 from .translation import IBMModel2, words
 
@@ -54,8 +54,8 @@ def train_ibm2(rows) -> tuple[IBMModel2, float]:
     return model, time.perf_counter() - t0
 
 
-def train(rows, candidates_of=None) -> tuple[LogLinear, float]:
-    """The log-linear model trained on rows with `command`, `dungeon` and `explanations`
+def train(rows, candidates_of=None) -> tuple[Ensemble, float]:
+    """The grounding model (log-linear models voting, ensemble.py) trained on rows with `command`, `dungeon` and `explanations`
     ([{task, weight}]), and the training time in seconds. A row's negatives are its
     dungeon's candidate tasks from the start, or `candidates_of(row)`."""
     from .pairs import candidates
@@ -69,7 +69,7 @@ def train(rows, candidates_of=None) -> tuple[LogLinear, float]:
         examples.append((r["command"], cands + [t for t in target if t not in cands], target))
     if not examples:
         raise BccError("no pair to train on")
-    model = LogLinear.train(examples)
+    model = Ensemble.train(examples)
     return model, time.perf_counter() - t0
 
 

@@ -56,7 +56,8 @@ def task_features(task: str, agent: str = "agent") -> list[str]:
     return out
 
 
-def command_features(tokens: list[str]) -> list[str]:
+def command_features(tokens: list[str], skips: int = 0) -> list[str]:
+    """The command's features; `skips` > 1 adds pairs of words up to that many apart (`s:`)."""
     out = ["<bias>"]
     m = len(tokens)
     for j, w in enumerate(tokens):
@@ -66,6 +67,8 @@ def command_features(tokens: list[str]) -> list[str]:
         out.append(("h2:" if 2 * j >= m else "h1:") + w)
         if j >= m - TAIL:
             out.append("e:" + w)
+        # words a few apart: "chair ... green" across the words between them
+        out += [f"s:{w}_{tokens[k]}" for k in range(j + 2, min(m, j + skips + 1))]
     # a word said again and again ("go to the door ... the door ... the door"): how many
     # rooms a route crosses, and so whether the agent comes back
     out += [f"c{min(n, 3)}:{w}" for w, n in Counter(tokens).items() if n >= 2]
@@ -92,11 +95,12 @@ class LogLinear(JsonModelFile):
     """The trained model: feature indices, the weight matrix and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
-                 pairs: int = 0, iterations: int = 0):
+                 pairs: int = 0, iterations: int = 0, skips: int = 0):
         self.command_index, self.task_index = command_index, task_index
         self.W = weights
         self.speller = speller
         self.pairs, self.iterations = pairs, iterations
+        self.skips = skips
         self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     # ---- interpreting ------------------------------------------------------------------
@@ -107,7 +111,7 @@ class LogLinear(JsonModelFile):
         return [w for w in command_words if w in self.vocabulary]
 
     def _command_vector(self, tokens: list[str]) -> np.ndarray:
-        idx = [self.command_index[f] for f in command_features(tokens) if f in self.command_index]
+        idx = [self.command_index[f] for f in command_features(tokens, self.skips) if f in self.command_index]
         return self.W[idx].sum(axis=0)
 
     def _task_matrix(self, tasks: list[str]) -> np.ndarray:
@@ -127,7 +131,7 @@ class LogLinear(JsonModelFile):
 
     # ---- training ----------------------------------------------------------------------
     @classmethod
-    def train(cls, examples: list, iterations: int = ITERATIONS, l2: float = L2) -> LogLinear:
+    def train(cls, examples: list, iterations: int = ITERATIONS, l2: float = L2, skips: int = 0) -> LogLinear:
         """`examples`: (command text, candidate task texts, {task text: weight}) -- the weights of
         the pair's task (one task weighted 1 when known, a demonstration's explanations when not);
         every weighted task must be among the candidates."""
@@ -135,7 +139,7 @@ class LogLinear(JsonModelFile):
         counts = Counter()
         prepared = []
         for command, candidates, target in examples:
-            feats = command_features(speller.normalise(command))
+            feats = command_features(speller.normalise(command), skips)
             counts.update(feats)
             prepared.append((feats, list(candidates), target))
         # a feature of a single command says more about that command than about the language
@@ -189,12 +193,12 @@ class LogLinear(JsonModelFile):
                 G[members] = (e / z - q / zq) @ T
             grad = by_col.sum(G) / n + l2 * W
             return loss / n + 0.5 * l2 * float((W * W).sum()), grad.ravel()
-        W = minimise(value_and_gradient, np.zeros(dc * dt), iterations=iterations).reshape(dc, dt)
-        return cls(command_index, task_index, W, speller, pairs=n, iterations=iterations)
+        x, used = minimise(value_and_gradient, np.zeros(dc * dt), iterations=iterations)
+        return cls(command_index, task_index, x.reshape(dc, dt), speller, pairs=n, iterations=used, skips=skips)
 
     # ---- files -------------------------------------------------------------------------
     def to_json(self) -> dict:
-        return {"format": FORMAT, "pairs": self.pairs, "iterations": self.iterations,
+        return {"format": FORMAT, "pairs": self.pairs, "iterations": self.iterations, "skips": self.skips,
                 "command_features": sorted(self.command_index, key=self.command_index.get),
                 "task_features": sorted(self.task_index, key=self.task_index.get),
                 "weights": [[round(float(x), 4) for x in row] for row in self.W],
@@ -209,7 +213,8 @@ class LogLinear(JsonModelFile):
             W = np.array(data["weights"], dtype=np.float64).reshape(len(cf), len(tf))
             counts = {str(w): int(c) for w, c in data["word_counts"].items()}
             return cls({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, W, Speller(counts),
-                       pairs=int(data.get("pairs", 0)), iterations=int(data.get("iterations", 0)))
+                       pairs=int(data.get("pairs", 0)), iterations=int(data.get("iterations", 0)),
+                       skips=int(data.get("skips", 0)))
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed grounding model: {exc}", path) from None
 

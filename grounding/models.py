@@ -1,21 +1,25 @@
-"""Grounding model files: the log-linear model, or IBM Model 2 from older files, by their format."""
+"""Grounding model files: log-linear models voting as an ensemble, one log-linear model, or IBM
+Model 2 from older files, by their format."""
 from __future__ import annotations
 
 import json
 from pathlib import Path
 
 from ..errors import BccError, read_input
+from .ensemble import FORMAT as ENSEMBLE, Ensemble
 from .loglinear import FORMAT as LOGLINEAR, LogLinear
 from .translation import FORMAT as IBM2, IBMModel2
 
 
 def from_json(data, path: str | None = None):
     kind = data.get("format") if isinstance(data, dict) else None
+    if kind == ENSEMBLE:
+        return Ensemble.from_json(data, path)
     if kind == LOGLINEAR:
         return LogLinear.from_json(data, path)
     if kind == IBM2:
         return IBMModel2.from_json(data, path)
-    raise BccError(f"not a grounding model: expected \"format\": \"{LOGLINEAR}\" (or \"{IBM2}\")", path)
+    raise BccError(f"not a grounding model: expected \"format\": \"{ENSEMBLE}\" (or \"{LOGLINEAR}\", \"{IBM2}\")", path)
 
 
 def load(path: str | Path):

@@ -106,8 +106,8 @@ def examples(rows: list[dict], mode: str) -> list:
 
 
 def train(rows: list[dict], mode: str = "tasks"):
-    from .loglinear import LogLinear
-    return LogLinear.train(examples(rows, mode))
+    from .ensemble import Ensemble
+    return Ensemble.train(examples(rows, mode))
 
 
 def predict(model, rows: list[dict]) -> list[str]:

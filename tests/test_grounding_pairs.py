@@ -5,7 +5,10 @@ from __future__ import annotations
 import json
 import random
 
+import pytest
+
 from bcc.cli import main
+from bcc.errors import BccError
 from bcc.grounding.loglinear import LogLinear
 from bcc.grounding.text import Speller, edit_distance
 from click.testing import CliRunner
@@ -126,11 +129,36 @@ def test_lbfgs_finds_known_minima():
     # a convex quadratic 1/2 x'Ax - b'x: the minimum solves Ax = b
     A = np.array([[4.0, 1.0, 0.0], [1.0, 3.0, 0.5], [0.0, 0.5, 2.0]])
     b = np.array([1.0, -2.0, 0.5])
-    x = minimise(lambda x: (0.5 * x @ A @ x - b @ x, A @ x - b), np.zeros(3))
+    x, used = minimise(lambda x: (0.5 * x @ A @ x - b @ x, A @ x - b), np.zeros(3))
+    assert 0 < used < 50
     assert np.allclose(x, np.linalg.solve(A, b), atol=1e-5)
     # Rosenbrock's valley (not convex): the minimum is (1, 1)
 
     def rosen(v):
         x, y = v
         return (1 - x) ** 2 + 100 * (y - x * x) ** 2, np.array([-2 * (1 - x) - 400 * x * (y - x * x), 200 * (y - x * x)])
-    assert np.allclose(minimise(rosen, np.array([-1.2, 1.0]), iterations=500), [1.0, 1.0], atol=1e-4)
+    assert np.allclose(minimise(rosen, np.array([-1.2, 1.0]), iterations=500)[0], [1.0, 1.0], atol=1e-4)
+
+
+def test_ensemble_votes_and_round_trips(tmp_path):
+    from bcc.grounding import models
+    from bcc.grounding.ensemble import Ensemble
+    from bcc.grounding.loglinear import command_features
+    # pairs of words a few apart: "chair ... green" with three words between them
+    assert "s:chair_green" in command_features("chair to the big green".split(), skips=4)
+    assert not any(f.startswith("s:") for f in command_features("chair to the big green".split()))
+    tasks = ["blockInRoom(chair, green)", "blockInRoom(chair, blue)"]
+    ex = [("push the chair into the green room", tasks, {tasks[0]: 1.0}),
+          ("push the chair into the blue room", tasks, {tasks[1]: 1.0})] * 3
+    model = Ensemble.train(ex)
+    assert [m.skips for m in model.members] == [0, 4]
+    alone = [m.log_posterior("chair into green", tasks) for m in model.members]
+    both = model.log_posterior("chair into green", tasks)
+    # the mean of the members' log-probabilities, renormalised: between the two members
+    assert both[0] > both[1] and min(a[0] for a in alone) - 1e-9 <= both[0] <= max(a[0] for a in alone) + 1e-9
+    model.save(tmp_path / "e.json")
+    again = models.load(tmp_path / "e.json")
+    assert isinstance(again, Ensemble) and abs(again.log_posterior("chair into green", tasks)[0] - both[0]) < 1e-3
+    (tmp_path / "bad.json").write_text('{"format": "bcc-ensemble/1", "members": [{"format": "x"}]}')
+    with pytest.raises(BccError, match="members"):
+        models.load(tmp_path / "bad.json")
