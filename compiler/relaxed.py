@@ -230,6 +230,7 @@ class Builder:
         self.fired: dict = {}        # (action, residual effects) -> aux fact
         self.fired_values: dict = {}  # fired fact -> (the atom it writes, the facts it may add)
         self.cond_cache: dict = {}   # residual condition -> its decision-tree leaves
+        self.clusters_cache: dict = {}  # residual conjuncts -> their clusters
         self.written_cache: dict = {}  # residual top-level effect -> atoms it may write
 
     # ---- facts -------------------------------------------------------------------------
@@ -305,7 +306,17 @@ class Builder:
     # ---- conditions ----------------------------------------------------------------------
     def clusters(self, conds, env, limit=COND_LIMIT):
         """Minterm sets of the conjuncts, those that share atoms evaluated together.
-        None if the conjunction is false; conjuncts too big to enumerate are dropped."""
+        None if the conjunction is false; conjuncts too big to enumerate are dropped.
+        Without an environment the answer depends on the conjuncts only: remembered (many
+        contexts leave the same residual preconditions)."""
+        if env:
+            return self._clusters(conds, env, limit)
+        key = (tuple(conds), limit)
+        if key not in self.clusters_cache:
+            self.clusters_cache[key] = self._clusters(conds, env, limit)
+        return self.clusters_cache[key]
+
+    def _clusters(self, conds, env, limit):
         parts = []
         for c in conds:
             leaves = self.cond_cache.get(c) if not env else None
