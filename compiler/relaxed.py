@@ -229,6 +229,9 @@ class Builder:
         self.or_facts: dict = {}     # frozenset of minterms -> aux fact
         self.fired: dict = {}        # (action, residual effects) -> aux fact
         self.fired_values: dict = {}  # fired fact -> (the atom it writes, the facts it may add)
+        # Caches keyed by the identity of residual IR (interned, relaxed_eval._mk), each
+        # entry holding its key objects so that no id is reused while the builder lives.
+        self.keep: list = []
         self.cond_cache: dict = {}   # residual condition -> its decision-tree leaves
         self.clusters_cache: dict = {}  # residual conjuncts -> their clusters
         self.written_cache: dict = {}  # residual top-level effect -> atoms it may write
@@ -311,22 +314,24 @@ class Builder:
         contexts leave the same residual preconditions)."""
         if env:
             return self._clusters(conds, env, limit)
-        key = (tuple(conds), limit)
-        if key not in self.clusters_cache:
-            self.clusters_cache[key] = self._clusters(conds, env, limit)
-        return self.clusters_cache[key]
+        key = (tuple(map(id, conds)), limit)
+        hit = self.clusters_cache.get(key)
+        if hit is None:   # the conjuncts are kept with the answer: their ids stay theirs
+            hit = self.clusters_cache[key] = (conds, self._clusters(conds, env, limit))
+        return hit[1]
 
     def _clusters(self, conds, env, limit):
         parts = []
         for c in conds:
-            leaves = self.cond_cache.get(c) if not env else None
+            hit = self.cond_cache.get(id(c)) if not env else None
+            leaves = None if hit is None else hit[1]
             if leaves is None:
                 try:
                     leaves = self.ev.branch(lambda e, c=c: self.ev.truth(c, e), env, limit)
                 except (TooBig, Drop):
                     leaves = ()
                 if not env:
-                    self.cond_cache[c] = leaves
+                    self.cond_cache[id(c)] = (c, leaves)
             if leaves == ():
                 continue
             true = [m for m, r in leaves if r]
@@ -465,7 +470,7 @@ class Builder:
         adds = []
         for atom in sorted(set().union(*written)):
             tops = tuple(top for top, w in zip(effects, written) if atom in w)
-            key = (index, atom, tops)
+            key = (index, atom, tuple(map(id, tops)))
             f = self.fired.get(key)
             if f is None:
                 comp = _component(tops, atom, self.ev)
@@ -478,14 +483,17 @@ class Builder:
                     pass
                 f = self.new_fact(f"fired:{a.name}#{len(self.fired)}")
                 self.fired[key] = f
+                self.keep.append(tops)   # their ids stay theirs
                 self.fire_effects(comp, f, atom)
             adds.append(f)
         self.op(pre_facts, adds, a.cost, index)
 
     def _written(self, top) -> frozenset:
-        w = self.written_cache.get(top)
+        hit = self.written_cache.get(id(top))
+        w = None if hit is None else hit[1]
         if w is None:
-            w = self.written_cache[top] = frozenset(self.ev.written_atoms((top,), set()))
+            w = frozenset(self.ev.written_atoms((top,), set()))
+            self.written_cache[id(top)] = (top, w)
         return w
 
     def fire_effects(self, effects, fired: int, atom) -> None:

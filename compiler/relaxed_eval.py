@@ -66,8 +66,42 @@ def _negate(node):
     return ir.Not(node)
 
 
+_CONSTS: dict = {}
+_CELLS: dict = {}
+
+
 def _const(value, type_="int"):
-    return ir.Const(value, "bool" if isinstance(value, bool) else type_)
+    key = (value, "bool" if isinstance(value, bool) else type_)
+    node = _CONSTS.get(key)
+    if node is None:
+        node = _CONSTS[key] = ir.Const(*key)
+    return node
+
+
+def _cell_atom(index):
+    node = _CELLS.get(index)
+    if node is None:
+        node = _CELLS[index] = CellAtom(index)
+    return node
+
+
+def _key(a):
+    if isinstance(a, tuple):
+        return tuple(map(_key, a))
+    if a is None or isinstance(a, (str, int, ir.StateVar)):
+        return a
+    return id(a)
+
+
+def _mk(ev, cls, *args):
+    """An IR node, interned: equal residuals built in different contexts are one object,
+    so the builder's caches key them by identity instead of hashing whole trees again."""
+    table = ev.interned
+    key = (cls, *map(_key, args))
+    node = table.get(key)
+    if node is None:
+        node = table[key] = cls(*args)
+    return node
 
 
 def residual(node, ev: "Evaluator", pins: dict, cells: dict, lets: dict, memo: dict, locs: dict | None = None):
@@ -79,10 +113,12 @@ def residual(node, ev: "Evaluator", pins: dict, cells: dict, lets: dict, memo: d
 
 def _res(node, ev, pins, cells, lets, memo, locs):
     t = type(node)
-    if t is ir.Const or t is CellAtom:
+    if t is ir.Const:
+        return node if node is BAD else _const(node.value, node.type)
+    if t is CellAtom:
         return node
     if t is ir.Var:
-        return _const(pins[node.var], node.var.type) if node.var in pins else node
+        return _const(pins[node.var], node.var.type) if node.var in pins else _mk(ev, ir.Var, node.var)
     if t is ir.Local:
         if node.name in locs:
             return _const(locs[node.name])
@@ -100,7 +136,7 @@ def _res(node, ev, pins, cells, lets, memo, locs):
             if var is None:
                 return BAD
             return _res(ir.Var(var), ev, pins, cells, lets, memo, locs)
-        return ir.VarAt(node.cls, key, node.attr, node.type)
+        return _mk(ev, ir.VarAt, node.cls, key, node.attr, node.type)
     if t is ir.Cell:
         parts = [_res(p, ev, pins, cells, lets, memo, locs) for p in (node.x, node.y, node.z)]
         if any(p is BAD for p in parts):
@@ -109,15 +145,15 @@ def _res(node, ev, pins, cells, lets, memo, locs):
             kind, value = ev.cell_at(*(p.value for p in parts))
             if kind == "const":
                 return _const(value)
-            return _const(cells[value]) if value in cells else CellAtom(value)
-        return ir.Cell(*parts, node.type)
+            return _const(cells[value]) if value in cells else _cell_atom(value)
+        return _mk(ev, ir.Cell, *parts, node.type)
     if t is ir.Lookup:
         i = _res(node.index, ev, pins, cells, lets, memo, locs)
         if i is BAD:
             return BAD
         if isinstance(i, ir.Const):
             return _const(node.table[i.value], node.type) if 0 <= i.value < len(node.table) else BAD
-        return ir.Lookup(node.table, i, node.type, node.label)
+        return _mk(ev, ir.Lookup, node.table, i, node.type, node.label)
     if t is ir.Arith:
         a = _res(node.left, ev, pins, cells, lets, memo, locs)
         b = _res(node.right, ev, pins, cells, lets, memo, locs)
@@ -128,12 +164,12 @@ def _res(node, ev, pins, cells, lets, memo, locs):
                 return _const(_arith(node.op, a.value, b.value))
             except Fail:
                 return BAD
-        return ir.Arith(node.op, a, b, node.type)
+        return _mk(ev, ir.Arith, node.op, a, b, node.type)
     if t is ir.Neg:
         a = _res(node.operand, ev, pins, cells, lets, memo, locs)
         if a is BAD:
             return BAD
-        return _const(-a.value) if isinstance(a, ir.Const) else ir.Neg(a)
+        return _const(-a.value) if isinstance(a, ir.Const) else _mk(ev, ir.Neg, a)
     if t is ir.Cmp:
         ops = [_res(p, ev, pins, cells, lets, memo, locs) for p in node.operands]
         if any(p is BAD for p in ops):
@@ -141,12 +177,12 @@ def _res(node, ev, pins, cells, lets, memo, locs):
         if all(isinstance(p, ir.Const) for p in ops):
             vals = [p.value for p in ops]
             return _const(all(_CMP[o](x, y) for o, x, y in zip(node.ops, vals, vals[1:])))
-        return ir.Cmp(node.ops, tuple(ops))
+        return _mk(ev, ir.Cmp, node.ops, tuple(ops))
     if t is ir.Not:
         a = _res(node.operand, ev, pins, cells, lets, memo, locs)
         if a is BAD:
             return BAD
-        return _const(not a.value) if isinstance(a, ir.Const) else ir.Not(a)
+        return _const(not a.value) if isinstance(a, ir.Const) else _mk(ev, ir.Not, a)
     if t is ir.BoolOp:
         decisive = node.op == "or"
         items = []
@@ -161,7 +197,7 @@ def _res(node, ev, pins, cells, lets, memo, locs):
             items.append(r)
         if not items:
             return _const(not decisive)
-        return items[0] if len(items) == 1 else ir.BoolOp(node.op, tuple(items))
+        return items[0] if len(items) == 1 else _mk(ev, ir.BoolOp, node.op, tuple(items))
     if t is ir.CellLoop:
         L = ev.L
         if L.width * L.height * L.depth > MAX_LOOP_CELLS:
@@ -200,12 +236,12 @@ def residual_effects(effects, ev, pins, cells, lets, memo):
             if isinstance(c, ir.Const):
                 out.extend(then if c.value else orelse)
             elif then or orelse:
-                out.append(ir.When(c, then, orelse))
+                out.append(_mk(ev, ir.When, c, then, orelse))
         elif isinstance(e, ir.SetVar):
             v = _res(e.value, ev, pins, cells, lets, memo, {})
             if v is BAD:
                 return BAD
-            out.append(ir.SetVar(e.var, v))
+            out.append(_mk(ev, ir.SetVar, e.var, v))
         elif isinstance(e, ir.SetVarAt):
             key = _res(e.key, ev, pins, cells, lets, memo, {})
             v = _res(e.value, ev, pins, cells, lets, memo, {})
@@ -215,14 +251,14 @@ def residual_effects(effects, ev, pins, cells, lets, memo):
                 var = ev.var_at(e.cls, key.value, e.attr)
                 if var is None:
                     return BAD
-                out.append(ir.SetVar(var, v))
+                out.append(_mk(ev, ir.SetVar, var, v))
             else:
-                out.append(ir.SetVarAt(e.cls, key, e.attr, v))
+                out.append(_mk(ev, ir.SetVarAt, e.cls, key, e.attr, v))
         elif isinstance(e, ir.SetCell):
             parts = [_res(p, ev, pins, cells, lets, memo, {}) for p in (e.x, e.y, e.z, e.value)]
             if any(p is BAD for p in parts):
                 return BAD
-            out.append(ir.SetCell(*parts))
+            out.append(_mk(ev, ir.SetCell, *parts))
     return tuple(out)
 
 
@@ -235,6 +271,7 @@ class Evaluator:
         self.area = layout.width * layout.depth
         self.layer_of = {y: i for i, y in enumerate(layout.layers)}
         self.keyed = layout.keyed
+        self.interned: dict = {}   # residual nodes built so far (see _mk)
 
     def var_at(self, cls, key, attr):
         kb = self.keyed.get(cls)
