@@ -136,9 +136,11 @@ class Abstract:
             decided_true &= sure
         return frozenset({True}) if decided_true else UNKNOWN_BOOL
 
-    def narrow(self, conditions) -> None:
+    def narrow(self, conditions) -> bool:
         """Restrict Locals and Vars by conditions known to hold (`0 <= tx < width`): a
-        non-relational refinement, sound because only values violating a hard condition go."""
+        non-relational refinement, sound because only values violating a hard condition go.
+        Returns whether some value set shrank (if not, every evaluation stays as it was)."""
+        shrank = False
         for cond in _conjuncts(conditions):
             if not isinstance(cond, ir.Cmp):
                 continue
@@ -154,8 +156,11 @@ class Abstract:
                 vals = [o.value if isinstance(o, ir.Const) else v for o in cond.operands]
                 if all(_CMP[op](a, b) for op, a, b in zip(cond.ops, vals, vals[1:])):
                     kept.add(v)
+            shrank |= len(kept) != len(values)
             self.pins[target] = frozenset(kept)
-        self.memo.clear()
+        if shrank:
+            self.memo.clear()
+        return shrank
 
     def e_Not(self, node):
         v = self.eval(node.operand)

@@ -73,7 +73,8 @@ class Analysis:
         """May the action's preconditions hold? If so, narrow `ab` by them for its effects."""
         if not all(maybe_true(ab.eval(c)) for c in action.pre):
             return False
-        ab.narrow(action.pre)
+        if not ab.narrow(action.pre):
+            return True   # nothing narrowed: the preconditions evaluate as they just did
         return all(maybe_true(ab.eval(c)) for c in action.pre)
 
 
