@@ -24,7 +24,8 @@ class _Stop(Exception):
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", **options) -> Result:
     meter = Meter(budget, progress)
     h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
-    costs, successors, is_goal, is_failure = model.action_costs, model.successors, model.is_goal, model.is_failure
+    # search successors: self-loops and failure states (unless goals) are left out there
+    costs, successors, is_goal = model.action_costs, model.search_successors(), model.is_goal
     start = model.initial
     max_states = budget.max_states
     counters = {"expanded": 0, "generated": 0, "depth": 0}
@@ -46,9 +47,10 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
                 raise _Stop(which)
         smallest = math.inf
         children = []
-        for action, nxt in successors(state):
-            counters["generated"] += 1
-            if nxt in on_path or is_failure(nxt):
+        nexts = successors(state)
+        counters["generated"] += len(nexts)
+        for action, nxt in nexts:
+            if nxt in on_path:
                 continue
             children.append((h(nxt) + costs[action], action, nxt))
         children.sort(key=lambda c: c[0])  # most promising first
