@@ -75,6 +75,26 @@ def _end_of_last_line(path: str, size: int, block: int = 65536) -> int:
     return 0
 
 
+LOCK_WAIT_SECONDS = 10.0   # a killed sweep's workers hold its lock until they exit too
+
+
+def _lock(fd: int, wait: float) -> bool:
+    """Take the results file's lock (released when every process holding it has ended),
+    waiting up to `wait` seconds: the workers of a sweep killed a moment ago inherited it
+    and are still on their way out (they die with their parent)."""
+    import fcntl
+    import time
+    deadline = time.monotonic() + wait
+    while True:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            return True
+        except BlockingIOError:
+            if time.monotonic() >= deadline:
+                return False
+            time.sleep(0.05)
+
+
 class ResultsFile:
     """Appends rows to `path`; use as a context manager."""
 
@@ -92,12 +112,9 @@ class ResultsFile:
     def open_for_append(self) -> int:
         """Open (creating it), lock it against a second sweep writing the same file, and cut
         off a torn last line; returns how many bytes were cut."""
-        import fcntl
         try:
             self.fd = os.open(self.path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o666)
-            try:
-                fcntl.flock(self.fd, fcntl.LOCK_EX | fcntl.LOCK_NB)  # released when this process ends
-            except BlockingIOError:
+            if not _lock(self.fd, LOCK_WAIT_SECONDS):
                 self.close()
                 raise BccError("another `bcc batch` is writing this results file; wait for it, "
                                "or choose another --out", self.path) from None

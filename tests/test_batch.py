@@ -275,7 +275,9 @@ def test_a_torn_last_line_longer_than_a_read_block_is_dropped_too(tmp_path):
     assert [r["key"] for r in rows] == [r.key for r in runs]
 
 
-def test_appends_are_whole_lines(tmp_path):
+def test_appends_are_whole_lines(tmp_path, monkeypatch):
+    from bcc.batch import store
+    monkeypatch.setattr(store, "LOCK_WAIT_SECONDS", 0.3)   # how long a second sweep waits for the lock
     out = tmp_path / "r.jsonl"
     with ResultsFile(str(out)) as f:
         f.append({"key": "a", "text": "x" * 200_000})
@@ -286,6 +288,9 @@ def test_appends_are_whole_lines(tmp_path):
 
 
 def test_a_killed_sweep_resumes_with_exactly_one_row_per_run(tmp_path):
+    """Rerun at once after a SIGKILL: the dying workers still hold the results file's lock
+    for a moment (under load it made the rerun fail as 'another bcc batch is writing'); the
+    rerun waits for them."""
     spec = "maze:width=15,depth=15,stones=1,seed=1..12"
     out = tmp_path / "r.jsonl"
     cmd = [sys.executable, "-m", "bcc", "batch", spec, "--workers", "2", "--out", str(out)]
