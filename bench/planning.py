@@ -45,6 +45,7 @@ BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-blind": ["--solver", "as
                "bcc-gbfs": ["--solver", "gbfs", "--heuristic", "hff"]}
 OPTIMAL = {"bcc-astar", "bcc-blind", "fd-blind", "fd-lmcut"}
 DUNGEON_GOAL = "every stone in the blue room"
+VALIDATE_SECONDS = 120
 
 
 def read_manifest(path: Path) -> list[dict]:
@@ -133,12 +134,17 @@ def validate_plan(domain: str, problem: str, plan_file: str) -> str:
     """pddl-pyvalidator's verdict; where it refuses the plan or cannot read the files, a
     second opinion from Fast Downward's translator (`sas_replay`). Neither shares code
     with bcc's reader or grounder."""
-    try:
-        from bcc.pddl_io.plans import validate
-        ok, why = validate(domain, problem, plan_file)
+    code = ("import json, sys\nfrom bcc.pddl_io.plans import validate\n"
+            "print(json.dumps(validate(*sys.argv[1:4])))")
+    try:   # a process of its own, with a limit: unified-planning's parser can take many minutes (nomystery p02)
+        proc = subprocess.run([sys.executable, "-c", code, domain, problem, plan_file], capture_output=True,
+                              text=True, timeout=VALIDATE_SECONDS)
+        ok, why = json.loads(proc.stdout.strip().splitlines()[-1])
         verdict = "valid" if ok else f"INVALID: {why}"
-    except Exception as exc:  # noqa: BLE001 - the validator is optional and may fail on its own
-        ok, verdict = False, f"not checked ({type(exc).__name__})"
+    except subprocess.TimeoutExpired:
+        ok, verdict = False, f"not checked (pyvalidator took over {VALIDATE_SECONDS} s)"
+    except (ValueError, IndexError):  # the validator is optional and may fail on its own
+        ok, verdict = False, f"not checked ({(proc.stderr.strip().splitlines() or ['?'])[-1][:120]})"
     if ok:
         return verdict
     second = sas_replay(domain, problem, plan_file)
