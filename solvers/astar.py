@@ -24,7 +24,7 @@ import heapq
 import math
 
 from ..model import Model
-from .base import CHECK_EVERY, Budget, Meter, Result, budget_result
+from .base import Budget, Meter, Result, budget_result
 from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
@@ -41,6 +41,7 @@ def weight_option(default: float) -> Option:
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", weight: float = 1.0,
           name: str = "astar", **options) -> Result:
     meter = Meter(budget, progress)
+    mask = meter.mask
     switching = heuristic == "auto"
     used = "manhattan" if switching else heuristic
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
@@ -85,8 +86,9 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
             plan, cost = _plan(model, nodes, state)
             return result(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded, generated=generated)
         expanded += 1
-        if expanded % CHECK_EVERY == 0 or max_states is not None and len(nodes) > max_states:
+        if not expanded & mask or max_states is not None and len(nodes) > max_states:
             which = meter.check(expanded, generated, len(nodes))
+            mask = meter.mask
             if which:
                 r = budget_result(name, which, meter, expanded, generated, len(nodes))
                 r.heuristic, r.initial_h = used, h0

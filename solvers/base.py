@@ -12,7 +12,8 @@ from typing import Callable
 from ..model import Model
 from .memory import address_space_left, current_rss_mb, peak_rss_mb, physical_memory_mb, reanchor_cap
 
-CHECK_EVERY = 1024  # expansions between time/memory checks
+CHECK_EVERY = 1024  # expansions between time/memory checks, at most
+CHECK_GAP = 0.1     # seconds between checks, at most, once the loop has adapted
 
 
 @dataclass(frozen=True)
@@ -72,18 +73,28 @@ class Meter:
         self.start = time.perf_counter()
         self.base_mb = current_rss_mb()
         self.peak_mb = self.base_mb
-        self.last_report = self.start
+        self.last_report = self.last_check = self.start
         self.last_stored = 0
+        # Expansions between checks, less one (a loop tests `not expanded & mask`): from 0,
+        # doubled while checks come close together, up to CHECK_EVERY - 1, and halved while
+        # they come more than CHECK_GAP apart (a costly heuristic expands a few hundred
+        # states a second), so a limit is seen within about CHECK_GAP.
+        self.mask = 0
 
     def elapsed(self) -> float:
         return time.perf_counter() - self.start
 
     def check(self, expanded: int, generated: int, stored: int) -> str | None:
-        """Called every CHECK_EVERY expansions: the exhausted budget's name, or None."""
+        """Called when `expanded & self.mask` is 0: the exhausted budget's name, or None."""
         b = self.budget
         if b.max_states is not None and stored > b.max_states:
             return "max_states"
         now = time.perf_counter()
+        gap, self.last_check = now - self.last_check, now
+        if gap > CHECK_GAP and self.mask:
+            self.mask >>= 1
+        elif gap < CHECK_GAP / 8 and self.mask < CHECK_EVERY - 1:
+            self.mask = self.mask * 2 + 1
         if b.time_limit is not None and now - self.start > b.time_limit:
             return "time_limit"
         mb = current_rss_mb()

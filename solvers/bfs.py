@@ -12,13 +12,14 @@ from __future__ import annotations
 from collections import deque
 
 from ..model import Model
-from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
+from .base import Budget, Meter, Result, budget_result, extract_plan
 from .options import declare
 
 
 @declare(optimal=True)   # no options; optimal for unit costs
 def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     meter = Meter(budget, progress)
+    mask = meter.mask
     start = model.initial
     parents = {start: None}
     if model.is_goal(start):
@@ -31,8 +32,9 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     while frontier:
         state = popleft()
         expanded += 1
-        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
+        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
+            mask = meter.mask
             if which:
                 return budget_result("bfs", which, meter, expanded, generated, len(parents))
         nexts = successors(state)

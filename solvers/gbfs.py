@@ -18,7 +18,7 @@ import heapq
 import math
 
 from ..model import Model
-from .base import CHECK_EVERY, Budget, Meter, Result, budget_result, extract_plan
+from .base import Budget, Meter, Result, budget_result, extract_plan
 from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
@@ -60,6 +60,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
     turn = boost = 0
     best = h0
     tie = expanded = generated = 0
+    mask = meter.mask
     while queues[0] or queues[1]:
         if boost > 0 and queues[1]:
             q, boost = 1, boost - 1
@@ -76,8 +77,9 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
                                        expanded=expanded, generated=generated, stored=len(parents),
                                        heuristic=heuristic, initial_h=h0))
         expanded += 1
-        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
+        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
+            mask = meter.mask
             if which:
                 return budget_result("gbfs", which, meter, expanded, generated, len(parents))
         prefer = pref_of.pop(state, frozenset()) if pref_of is not None else frozenset()
@@ -121,6 +123,7 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
     turn = boost = 0
     best = h0
     tie = expanded = generated = 0
+    mask = meter.mask
     while queues[0] or queues[1]:
         if boost > 0 and queues[1]:
             q, boost = 1, boost - 1
@@ -145,8 +148,9 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
         if hs < best:
             best, boost = hs, BOOST
         expanded += 1
-        if expanded % CHECK_EVERY == 0 or budget.max_states is not None and len(parents) > budget.max_states:
+        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
+            mask = meter.mask
             if which:
                 return budget_result("gbfs", which, meter, expanded, generated, len(parents))
         for action, nxt in model.successors(state):

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 
 from ..model import Model
-from .base import CHECK_EVERY, Budget, Meter, Result
+from .base import Budget, Meter, Result
 from .heuristics import HEURISTICS
 from .options import declare, heuristic_option
 
@@ -41,7 +41,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
         counters["expanded"] += 1
         if max_states is not None and counters["expanded"] > max_states:
             raise _Stop("max_states")
-        if counters["expanded"] % CHECK_EVERY == 0:
+        if not counters["expanded"] & meter.mask:
             which = meter.check(counters["expanded"], counters["generated"], len(path_states))
             if which:
                 raise _Stop(which)

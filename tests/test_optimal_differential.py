@@ -120,7 +120,8 @@ def test_auto_switch_on_any_expansion_keeps_the_optimum(monkeypatch, name):
     (Before the fix, 2 to 6 of these switch points returned longer plans.)"""
     model = compile_dungeon(name)
     optimum = get_solver("bfs")(model, Budget()).cost
-    monkeypatch.setattr(astar, "CHECK_EVERY", 1)
+    from bcc.solvers import base
+    monkeypatch.setattr(base, "CHECK_EVERY", 1)   # the Meter's mask is 0: a check on every expansion
     for switch_after in range(1, 60):
         monkeypatch.setattr(astar, "SWITCH_AFTER", switch_after)
         r = astar.solve(model, Budget())

@@ -129,3 +129,26 @@ def test_small_state_budgets_are_honoured_exactly(solver):
     # Checked at every expansion, not only every CHECK_EVERY expansions.
     result = get_solver(solver)(compiled("tough_maze"), Budget(max_states=50))
     assert result.status == "budget" and result.stored <= 50 + 8  # one expansion adds <= 8 states
+
+
+def test_slow_expansions_are_checked_often_enough_to_keep_the_time_limit():
+    """A loop checks its budget when `expanded & meter.mask` is 0. With 1,024 expansions
+    between checks, a heuristic costing 10 ms a state ran 10 s past a 0.3 s limit (LM-cut
+    on large PDDL tasks: seconds); the mask adapts so checks come about CHECK_GAP apart,
+    and fast loops still check only every 1,024 expansions."""
+    import time
+    from bcc.solvers.base import CHECK_EVERY, Meter
+
+    def run(seconds_per_expansion, limit):
+        meter = Meter(Budget(time_limit=limit))
+        expanded, start = 0, time.perf_counter()
+        while True:
+            expanded += 1
+            if seconds_per_expansion:
+                time.sleep(seconds_per_expansion)
+            if not expanded & meter.mask and meter.check(expanded, expanded, expanded):
+                return time.perf_counter() - start, meter.mask
+    overshoot, _ = run(0.01, 0.3)
+    assert overshoot < 0.3 + 0.5
+    _, mask = run(0, 0.05)
+    assert mask == CHECK_EVERY - 1
