@@ -23,6 +23,37 @@ from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
 BOOST = 1000
+
+
+class _OpenLists:
+    """The two open lists: every state, and states reached by a preferred action. They
+    are taken in turn, and each new best h gives the preferred list BOOST extra turns."""
+
+    def __init__(self, h0, start):
+        self.queues = [[(h0, 0, start)], []]
+        self.turn = self.boost = self.tie = 0
+        self.best = h0
+
+    def __bool__(self) -> bool:
+        return bool(self.queues[0] or self.queues[1])
+
+    def pop(self):
+        if self.boost > 0 and self.queues[1]:
+            q, self.boost = 1, self.boost - 1
+        else:
+            q = self.turn if self.queues[self.turn] else 1 - self.turn
+            self.turn = 1 - self.turn
+        return heapq.heappop(self.queues[q])[2]
+
+    def push(self, h, state, preferred: bool) -> None:
+        self.tie += 1
+        heapq.heappush(self.queues[0], (h, self.tie, state))
+        if preferred:
+            heapq.heappush(self.queues[1], (h, self.tie, state))
+
+    def progress(self, h) -> None:
+        if h < self.best:
+            self.best, self.boost = h, BOOST
 COSTLY = {"hmax", "hadd", "hff", "lmcut"}   # heuristics evaluated lazily by default
 
 
@@ -55,19 +86,12 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
                                    heuristic=heuristic, initial_h=h0,
                                    message="no plan exists: the goal cannot hold at any reachable position"))
     pref_of = {start: helpful()} if helpful else None
-    queues = [[(h0, 0, start)], []]   # all states; states reached by a preferred action
+    open_lists = _OpenLists(h0, start)
     closed = set()
-    turn = boost = 0
-    best = h0
-    tie = expanded = generated = 0
+    expanded = generated = 0
     mask = meter.mask
-    while queues[0] or queues[1]:
-        if boost > 0 and queues[1]:
-            q, boost = 1, boost - 1
-        else:
-            q = turn if queues[turn] else 1 - turn
-            turn = 1 - turn
-        _, _, state = heapq.heappop(queues[q])
+    while open_lists:
+        state = open_lists.pop()
         if state in closed:
             continue
         closed.add(state)
@@ -91,14 +115,10 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", p
             if hn == math.inf:
                 continue
             parents[nxt] = (state, action)
-            tie += 1
-            heapq.heappush(queues[0], (hn, tie, nxt))
+            open_lists.push(hn, nxt, action in prefer)
             if pref_of is not None:
                 pref_of[nxt] = helpful()
-                if action in prefer:
-                    heapq.heappush(queues[1], (hn, tie, nxt))
-            if hn < best:
-                best, boost = hn, BOOST
+            open_lists.progress(hn)
     return meter.finish(Result(solver="gbfs", solved=False, status="no_solution", expanded=expanded,
                                generated=generated,
                                stored=len(parents), heuristic=heuristic, initial_h=h0,
@@ -118,19 +138,12 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
         return finish(solved=False, status="no_solution",
                       message="no plan exists: the goal cannot hold at any reachable position")
     known = {start: (h0, helpful() if helpful else frozenset())}
-    queues = [[(h0, 0, start)], []]   # all states; states reached by a preferred action
+    open_lists = _OpenLists(h0, start)
     closed = set()
-    turn = boost = 0
-    best = h0
-    tie = expanded = generated = 0
+    expanded = generated = 0
     mask = meter.mask
-    while queues[0] or queues[1]:
-        if boost > 0 and queues[1]:
-            q, boost = 1, boost - 1
-        else:
-            q = turn if queues[turn] else 1 - turn
-            turn = 1 - turn
-        _, _, state = heapq.heappop(queues[q])
+    while open_lists:
+        state = open_lists.pop()
         if state in closed:
             continue
         closed.add(state)
@@ -145,8 +158,7 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
             prefer = helpful() if helpful else frozenset()
         if hs == math.inf:
             continue
-        if hs < best:
-            best, boost = hs, BOOST
+        open_lists.progress(hs)
         expanded += 1
         if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
             which = meter.check(expanded, generated, len(parents))
@@ -158,9 +170,6 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
             if nxt in parents or model.is_failure(nxt):
                 continue
             parents[nxt] = (state, action)
-            tie += 1
-            heapq.heappush(queues[0], (hs, tie, nxt))
-            if action in prefer:
-                heapq.heappush(queues[1], (hs, tie, nxt))
+            open_lists.push(hs, nxt, action in prefer)
     return finish(solved=False, status="no_solution", expanded=expanded, generated=generated,
                   message="no plan exists: every reachable state was explored")
