@@ -10,7 +10,7 @@ from dataclasses import asdict, dataclass, field
 from typing import Callable
 
 from ..model import Model
-from .memory import address_space_left, current_rss_mb, peak_rss_mb, physical_memory_mb, reanchor_cap
+from .memory import current_rss_mb, memory_check, peak_rss_mb, physical_memory_mb
 
 CHECK_EVERY = 1024  # expansions between time/memory checks, at most
 CHECK_GAP = 0.1     # seconds between checks, at most, once the loop has adapted
@@ -97,14 +97,11 @@ class Meter:
             self.mask = self.mask * 2 + 1
         if b.time_limit is not None and now - self.start > b.time_limit:
             return "time_limit"
-        mb = current_rss_mb()
-        self.peak_mb = max(self.peak_mb, mb)
         growth, self.last_stored = stored - self.last_stored, stored
-        if b.max_memory_mb is not None:
-            reanchor_cap()
-            reserve = table_growth_mb(stored, growth)
-            if mb + reserve > b.max_memory_mb or not address_space_left(reserve + 16):
-                return "max_memory"
+        mb, fits = memory_check(b.max_memory_mb, table_growth_mb(stored, growth))
+        self.peak_mb = max(self.peak_mb, mb)
+        if not fits:
+            return "max_memory"
         if self.progress is not None and now - self.last_report >= 0.5:
             self.last_report = now
             self.progress(expanded=expanded, generated=generated, stored=stored, seconds=now - self.start)

@@ -57,11 +57,12 @@ def peak_rss_mb() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
-def cap_growth(extra_mb: float, lock: bool = False) -> bool:
+def cap_growth(extra_mb: float, lock: bool = False, statm: tuple[int, int] | None = None) -> bool:
     """Cap the address space at what the process maps now plus `extra_mb` (never above
     the hard limit); with `lock`, the hard limit too, so the process cannot lift it (a
-    sandboxed job). False when this system has no /proc or rlimits to do it with."""
-    statm = _statm()
+    sandboxed job). `statm` is a reading the caller already made. False when this system
+    has no /proc or rlimits to do it with."""
+    statm = statm or _statm()
     if statm is None:
         return False
     try:
@@ -103,21 +104,24 @@ def disarm_cap(armed) -> None:
         pass
 
 
-def reanchor_cap() -> None:
-    """Move an armed cap to the address space now plus the budget left (a search's
-    budget check calls this, so mappings added since the last check do not count)."""
+def memory_check(max_memory_mb: float | None, reserve_mb: float) -> tuple[float, bool]:
+    """A search's memory check, from one reading of /proc: (resident MB now, whether the
+    process may grow by `reserve_mb` more). It first moves an armed cap to the address
+    space now plus the budget left, so mappings added since the last check (imports, a
+    heuristic's tables) do not count; then the growth must fit both the budget and the
+    cap, since a growth the cap refuses is a MemoryError with nothing left to handle it."""
+    statm = _statm()
+    if statm is None:
+        resident = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+        return resident, max_memory_mb is None or resident + reserve_mb <= max_memory_mb
+    space, resident = statm[0], statm[1] / 2**20
+    if max_memory_mb is None:
+        return resident, True
     if _budget_mb is not None:
-        cap_growth(_budget_mb - current_rss_mb())
-
-
-def address_space_left(mb: float) -> bool:
-    """Whether the cap leaves room to grow by `mb`: a growth it refuses is a MemoryError
-    with nothing left to handle it."""
+        cap_growth(_budget_mb - resident, statm=statm)
     try:
         cap = resource.getrlimit(resource.RLIMIT_AS)[0]
     except (OSError, ValueError):
-        return True
-    statm = _statm()
-    if cap == resource.RLIM_INFINITY or statm is None:
-        return True
-    return statm[0] + mb * 2**20 <= cap
+        cap = resource.RLIM_INFINITY
+    room = cap == resource.RLIM_INFINITY or space + (reserve_mb + 16) * 2**20 <= cap
+    return resident, room and resident + reserve_mb <= max_memory_mb
