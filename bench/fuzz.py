@@ -4,9 +4,12 @@
     python bench/fuzz.py                       # 10,000 inputs, 2 worker processes
     python bench/fuzz.py --inputs 500 --first 20000 --workers 1
     python bench/fuzz.py --show 1234 --out /tmp/case   # write input 1234's files to look at
+    python bench/fuzz.py --pddl --inputs 3000          # mutated PDDL through `bcc import pddl`
 
 Input i is `tests/fuzz_harness.make_case(i)`: a shipped file with 1-3 text, structure or
-expression mutations, a mutated domain, or a random `--goal` (see that module). Each runs
+expression mutations, a mutated domain, or a random `--goal` (see that module); with
+--pddl it is `make_pddl_case(i)`, a PDDL test pair with 1-3 mutations of its s-expression
+tree, run as `bcc import pddl DOMAIN PROBLEM` with the same options. Each runs
 `bcc solve --solver bfs --max-states 3000 --time-limit 3 FILE` in a worker process,
 in-process through `bcc.cli.main` (the entry point of the `bcc` command) with
 BCC_DEBUG=1 so a bug surfaces with its code site. A worker that does not answer within
@@ -38,6 +41,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tests"))
 import fuzz_harness as fh  # noqa: E402
 
+make_case = fh.make_case  # or fh.make_pddl_case (--pddl); set before the workers fork
+
 FAILURES = ("bad-message", "internal", "hang", "crash", "harness-error")
 
 
@@ -52,7 +57,7 @@ def worker(conn, memory_mb: int) -> None:
             return
         start = time.perf_counter()
         try:
-            case = fh.make_case(seed)
+            case = make_case(seed)
         except Exception as exc:  # noqa: BLE001 - a bug of the mutator, not of bcc: counted apart
             conn.send((seed, "?", {"kind": "harness-error", "detail": repr(exc)[:200], "site": ""}, 0.0))
             continue
@@ -111,7 +116,7 @@ def run(seeds: list[int], workers: int, timeout: float, memory_mb: int, progress
                     try:
                         seed, label, outcome, seconds = w["conn"].recv()
                     except (EOFError, OSError):
-                        results.append({"seed": w["seed"], "label": fh.make_case(w["seed"]).label, "kind": "crash",
+                        results.append({"seed": w["seed"], "label": make_case(w["seed"]).label, "kind": "crash",
                                         "detail": f"the worker died (exit {w['proc'].exitcode})", "site": "",
                                         "seconds": time.monotonic() - w["since"]})
                         w["seed"] = None
@@ -120,7 +125,7 @@ def run(seeds: list[int], workers: int, timeout: float, memory_mb: int, progress
                     results.append({"seed": seed, "label": label, **outcome, "seconds": seconds})
                     w["seed"] = None
                 elif time.monotonic() - w["since"] >= timeout:
-                    results.append({"seed": w["seed"], "label": fh.make_case(w["seed"]).label, "kind": "hang",
+                    results.append({"seed": w["seed"], "label": make_case(w["seed"]).label, "kind": "hang",
                                     "detail": f"no answer within {timeout:g} s", "site": "", "seconds": timeout})
                     w["seed"] = None
                     pool.replace(w)
@@ -189,22 +194,26 @@ def main() -> int:
     ap.add_argument("--memory", type=int, default=3000, help="address-space limit per worker, MB [3000]")
     ap.add_argument("--json", default=str(HERE / "fuzz.json"), help="where to write the JSON [bench/fuzz.json]")
     ap.add_argument("--seeds", help="comma-separated seeds to run instead (e.g. the failures of a run)")
+    ap.add_argument("--pddl", action="store_true", help="mutated PDDL pairs through `bcc import pddl`")
     ap.add_argument("--show", type=int, metavar="SEED", help="write input SEED's files to --out and exit")
     ap.add_argument("--out", default=".", help="with --show: a directory")
     args = ap.parse_args()
+    global make_case
+    if args.pddl:
+        make_case = fh.make_pddl_case
     if args.show is not None:
-        case = fh.make_case(args.show)
+        case = make_case(args.show)
         out = Path(args.out)
         out.mkdir(parents=True, exist_ok=True)
-        path = fh.write_case(case, out)
-        print(f"{case.label}: bcc {' '.join(fh.COMMAND)} {path} {' '.join(map(repr, case.args))}")
+        fh.write_case(case, out)
+        print(f"{case.label}: bcc {' '.join(map(repr, fh.case_argv(case, out)))}")
         return 0
     seeds = [int(x) for x in args.seeds.split(",")] if args.seeds else list(range(args.first, args.first + args.inputs))
     start = time.perf_counter()
     results = run(seeds, args.workers, args.timeout, args.memory, progress=True)
     summary = summarize(results)
     summary.update({"seconds": round(time.perf_counter() - start, 1), "first_seed": args.first,
-                    "command": fh.COMMAND, "timeout_s": args.timeout, "memory_mb": args.memory,
+                    "command": fh.COMMAND, "front": "pddl" if args.pddl else "yaml", "timeout_s": args.timeout, "memory_mb": args.memory,
                     "python": platform.python_version(), "machine": platform.machine(), "cpus": os.cpu_count()})
     print_table(summary)
     print(f"\n{summary['seconds']:.0f} s; JSON: {args.json}")

@@ -321,6 +321,8 @@ class Formulas:
         return params, inner
 
     def atom(self, node: SList, scope: dict):
+        if not node:
+            self.r.fail(node, "expected an atom (predicate args...), found ()")
         head = node[0]
         if isinstance(head, SList) or head.type != "NAME":
             self.r.fail(node, f"expected a predicate, found {_show(head)}")

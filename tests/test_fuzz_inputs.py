@@ -3,9 +3,11 @@
 error, a traceback or a hang.
 
 The inputs are `fuzz_harness.make_case(seed)` (text, structure and expression mutations of
-every shipped file, mutated domains, random `--goal`s), the same as bench/fuzz.py, which
-runs 10,000+ of them. Here: 150 seeds in the quick loop and 600 marked slow, each under a
-time budget. A failing seed reproduces with `python bench/fuzz.py --show SEED --out DIR`.
+every shipped file, mutated domains, random `--goal`s) and `make_pddl_case(seed)` (mutated
+s-expression trees of the PDDL test pairs through `bcc import pddl`), the same as
+bench/fuzz.py, which runs 10,000+ of them. Here: 150 + 120 seeds in the quick loop and
+600 + 480 marked slow, each under a time budget. A failing seed reproduces with
+`python bench/fuzz.py [--pddl] --show SEED --out DIR`.
 """
 from __future__ import annotations
 
@@ -20,7 +22,7 @@ from hypothesis import strategies as st
 from bcc.compiler.parse import parse_effects, parse_expression
 from bcc.compiler.source import Origin, load_yaml_text
 from bcc.errors import BccError
-from fuzz_harness import Outcome, make_case, run_case
+from fuzz_harness import Outcome, make_case, make_pddl_case, run_case
 
 BUDGET_S = 60  # per input; a solve stops itself at 3 s, a compile takes well under 1 s
 
@@ -42,18 +44,19 @@ def run_with_budget(case, tmp_path):
     return outcome
 
 
-def check_seeds(seeds, tmp_path_factory):
+def check_seeds(seeds, tmp_path_factory, make=make_case, solved_share=20):
     failures, kinds = [], {}
     for seed in seeds:
-        case = make_case(seed)
+        case = make(seed)
         outcome = run_with_budget(case, tmp_path_factory.mktemp(f"case{seed}"))
         kinds[outcome.kind] = kinds.get(outcome.kind, 0) + 1
         if outcome.kind not in ("ok", "no-plan", "bad-input"):
             failures.append((seed, case.label, outcome.kind, outcome.site or outcome.detail))
     assert not failures, failures
-    # The mutator reaches every stage: some inputs still compile and solve, most are refused.
+    # The mutator reaches every stage: some inputs still compile and solve (at least one in
+    # `solved_share`), most are refused.
     assert kinds.get("bad-input", 0) > len(seeds) // 3, kinds
-    assert kinds.get("ok", 0) + kinds.get("no-plan", 0) > len(seeds) // 20, kinds
+    assert kinds.get("ok", 0) + kinds.get("no-plan", 0) > len(seeds) // solved_share, kinds
 
 
 def test_mutated_inputs_give_a_result_or_bad_input(tmp_path_factory):
@@ -65,9 +68,20 @@ def test_many_mutated_inputs_give_a_result_or_bad_input(tmp_path_factory):
     check_seeds(range(150, 750), tmp_path_factory)  # bench/fuzz.py runs 10,000+
 
 
+def test_mutated_pddl_gives_a_result_or_bad_input(tmp_path_factory):
+    check_seeds(range(120), tmp_path_factory, make_pddl_case, solved_share=40)  # about 1 in 12 solve
+
+
+@pytest.mark.slow
+def test_many_mutated_pddl_files_give_a_result_or_bad_input(tmp_path_factory):
+    check_seeds(range(120, 600), tmp_path_factory, make_pddl_case, solved_share=40)  # bench/fuzz.py --pddl runs thousands
+
+
 def test_the_mutator_is_deterministic():
     assert make_case(7) == make_case(7)
     assert make_case(7) != make_case(8)
+    assert make_pddl_case(7) == make_pddl_case(7)
+    assert make_pddl_case(7) != make_pddl_case(8)
 
 
 # ---- the parser and the loader directly, with hypothesis -------------------------------
