@@ -43,6 +43,8 @@ def load(path: str | Path, dungeon: str | None = None, levels=None) -> list[dict
         if not isinstance(ref, str):
             raise BccError("\"dungeon\" must be a string", str(path), n, 1)
         level = row.get("level")
+        if level is not None and not isinstance(level, (str, int)) or isinstance(level, bool):
+            raise BccError("\"level\" must be a string such as \"L2\"", str(path), n, 1)
         if levels and level not in levels:
             continue
         out.append({"id": row.get("id", n), "command": row["command"], "task": canonical(row["task"]),
@@ -57,7 +59,10 @@ def check_tasks(rows: list[dict]) -> None:
     """Every pair's task must be a candidate task of its dungeon from the start."""
     from .learn import space_for
     for row in rows:
-        space = space_for(row["dungeon"])
+        try:
+            space = space_for(row["dungeon"])
+        except BccError as exc:  # e.g. no such dungeon: the pair that names it is the bad input
+            raise exc.at(row["path"], row["line"], 1) from None
         if space.task(row["task"]) is None or row["task"] not in candidates(row["dungeon"]):
             raise BccError(f"{row['task']!r} is not a task of dungeon {row['dungeon']!r} from its start "
                            f"(its atoms: {', '.join(a.text for a in space.atoms)})", row["path"], row["line"], 1)

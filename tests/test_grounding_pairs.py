@@ -91,6 +91,14 @@ def test_bad_pairs_are_bad_input(tmp_path):
     r = run("corpus", "evaluate", "--train", ok)
     assert r.exit_code == 2 and "--dungeon" in r.stderr
     assert run("corpus", "evaluate", "--folds", "3").exit_code == 2
+    # A pair naming a dungeon that does not exist, or a level that is not a name: the pair's line.
+    bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)"}\n'
+                   '{"command": "go", "task": "agentInRoom(agent, red)", "dungeon": "nope"}\n')
+    r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
+    assert r.exit_code == 2 and "bad.jsonl:2:1:" in r.stderr and "nope" in r.stderr
+    bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)", "level": ["L1"]}\n')
+    r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
+    assert r.exit_code == 2 and "bad.jsonl:1:1:" in r.stderr and "level" in r.stderr
 
 
 def test_train_pairs_then_command_cleanup(tmp_path):
