@@ -61,9 +61,9 @@ def run_cmd(dungeons, sweep_path, solvers, seeds, backend, workers, address, tim
     from .engine import run_batch
     from .progress import ProgressBar
     from .runs import build_runs, check_limits
-    from .sweep import Sweep, expand_setting, load_sweep
+    from .sweep import Sweep, expand_setting, load_sweep, seeds_from
     sweep = load_sweep(sweep_path) if sweep_path else Sweep()
-    names = sweep.dungeons + [n for n in expand_dungeons(dungeons) if n not in sweep.dungeons]
+    names = list(dict.fromkeys(sweep.dungeons + expand_dungeons(dungeons)))
     if not names:
         raise BccError("no dungeons: give DUNGEON arguments or a --sweep file with `dungeons`")
     settings = [s for name in solvers for s in expand_setting(name, {})] if solvers else sweep.settings
@@ -74,7 +74,7 @@ def run_cmd(dungeons, sweep_path, solvers, seeds, backend, workers, address, tim
     budget = dict(sweep.budget)
     budget.update(check_limits({"time_limit": time_limit, "max_states": max_states, "max_memory": max_memory}))
     settings = [(solver, options, {**budget, **limits}) for solver, options, limits in settings]
-    seed_list = list(range(seeds)) if seeds else (sweep.seeds or [0])
+    seed_list = seeds_from(seeds) if seeds else (sweep.seeds or [0])
     runs = build_runs(names, settings, seed_list, goal or sweep.goal)
     bar = ProgressBar(len(runs)) if sys.stderr.isatty() else None
     summary = run_batch(runs, out=out, backend=backend, workers=workers, address=address, progress=bar)

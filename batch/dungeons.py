@@ -21,6 +21,7 @@ import tempfile
 from pathlib import Path
 
 from ..errors import BccError
+from .runs import check_size
 
 GENERATORS = ("maze",)
 # generate_maze's parameters, in canonical order, with their defaults (as `bcc generate maze`)
@@ -39,16 +40,17 @@ def expand_dungeons(texts, base: Path | None = None, where=None) -> list[str]:
 
     `base` is the folder relative paths are read from (a sweep file's folder); `where(i)`
     gives the BccError position of entry i (a sweep file's line), else errors have none."""
-    out: list[str] = []
+    out: dict[str, None] = {}
     for i, text in enumerate(texts):
         try:
             names = _expand_one(text, base)
+            out.update(dict.fromkeys(names))
+            check_size(len(out), "the dungeons")
         except BccError as exc:
             if where is not None:
                 raise where(i, exc.message) from None
             raise
-        out.extend(n for n in names if n not in out)
-    return out
+    return list(out)
 
 
 def _expand_one(text, base: Path | None) -> list[str]:
@@ -96,6 +98,10 @@ def expand_spec(text: str) -> list[str]:
         values[key] = _values(text, key, raw.strip())
     keys = list(MAZE_PARAMS)
     axes = [values.get(k, [MAZE_PARAMS[k]]) for k in keys]
+    count = 1
+    for axis in axes:
+        count *= len(axis)
+    check_size(count, repr(text))
     specs, shapes = [], set()
     for combo in itertools.product(*axes):
         params = dict(zip(keys, combo))
@@ -117,6 +123,7 @@ def _values(text: str, key: str, raw: str) -> list:
                 lo_i, hi_i = int(lo), int(hi)
                 if hi_i < lo_i:
                     raise BccError(f"{text!r}: the range {alt!r} of {key} is empty")
+                check_size(hi_i - lo_i + 1 + len(out), f"{text!r}: {key}")
                 out.extend(range(lo_i, hi_i + 1))
             elif key == "loops":
                 out.append(float(alt))

@@ -14,6 +14,16 @@ from dataclasses import dataclass
 from ..errors import BccError
 
 BUDGETS = ("time_limit", "max_states", "max_memory")
+# The most runs one batch holds: its run list, keys and rows are in memory, and 100,000
+# runs of a second each are a day of a machine. Every axis is checked before it is
+# built, so `seed=0..99999999` is one error line, not gigabytes of run records.
+MAX_RUNS = 100_000
+
+
+def check_size(count: int, what: str) -> None:
+    """Refuse an axis or product of `count` runs past MAX_RUNS, before building it."""
+    if count > MAX_RUNS:
+        raise BccError(f"{what} makes {count:,} runs; one batch runs at most {MAX_RUNS:,}: split the sweep")
 
 
 @dataclass(frozen=True)
@@ -84,6 +94,8 @@ def build_runs(dungeons: list[str], settings: list[tuple[str, dict, dict]], seed
     """The product dungeons x settings x seeds, in that nesting order. A setting is
     (solver, options, limits); seeds multiply only the seeded solvers (the others are
     deterministic: one run each, seed null)."""
+    check_size(len(dungeons) * sum(len(seeds) if seeded(s) else 1 for s, _, _ in settings),
+               "the sweep (dungeons x solvers x seeds)")
     runs, seen = [], set()
     for dungeon, (solver, options, limits) in itertools.product(dungeons, settings):
         for seed in (seeds if seeded(solver) else [None]):

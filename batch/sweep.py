@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import BccError
-from .runs import BUDGETS, check_limits, check_options
+from .runs import BUDGETS, check_limits, check_options, check_size
 
 TOP_KEYS = {"dungeons", "solvers", "seeds", "goal", "budget"}
 
@@ -39,6 +39,7 @@ def seeds_from(value) -> list[int]:
     if isinstance(value, int):
         if value < 1:
             raise BccError(f"seeds must be at least 1, got {value}")
+        check_size(value, f"seeds: {value}")
         return list(range(value))
     if isinstance(value, list) and value and all(isinstance(s, int) and not isinstance(s, bool) for s in value):
         return list(dict.fromkeys(value))

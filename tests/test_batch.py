@@ -52,6 +52,8 @@ def test_generator_specs_expand_ranges_and_alternatives_to_canonical_names():
     ("maze:seed=5..1", "is empty"),
     ("maze:seed=x", "whole number"),
     ("maze:width", "expected key=value"),
+    ("maze:seed=0..99999999", "at most 100,000"),              # refused before 10^8 names are built
+    ("maze:width=5|7|9,seed=0..40000", "makes 120,003 runs"),  # 3 widths x 40,001 seeds
 ])
 def test_bad_generator_specs_are_one_error_naming_the_spec(spec, message):
     with pytest.raises(BccError) as err:
@@ -68,6 +70,17 @@ def test_globs_files_and_shipped_names(tmp_path, monkeypatch):
         expand_dungeons(["nothing*.yaml"])
     with pytest.raises(BccError, match="did you mean 'bridge'"):
         expand_dungeons(["bridg"])
+
+
+def test_a_sweep_past_the_run_limit_is_one_error_before_anything_is_built():
+    import resource
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    r = bcc("batch", "run", "grid", "--solver", "rmax", "--seeds", "999999999", "--out", "unused.jsonl")
+    assert r.exit_code == 2 and "at most 100,000" in r.stderr
+    # 10^9 seeds as a list would take tens of GB; refused, the process barely grew (KB)
+    assert resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before < 100_000
+    with pytest.raises(BccError, match="dungeons x solvers x seeds"):
+        build_runs([f"d{i}" for i in range(400)], [("rmax", {}, {})], list(range(300)))
 
 
 def test_run_set_is_the_product_and_seeds_multiply_only_seeded_solvers():
