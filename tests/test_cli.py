@@ -159,3 +159,15 @@ def test_generate_maze_then_solve(tmp_path):
         run("generate", "maze", "--width", "11", "--depth", "11", "--seed", "4").stdout
     bad = run("generate", "maze", "--width", "10")
     assert bad.exit_code == 2 and "odd" in bad.stderr
+
+
+def test_the_command_runs_numpy_on_one_blas_thread_unless_told_otherwise():
+    # A BLAS thread per core made `bcc train` 4x slower on a busy machine (see cli.py).
+    code = ("import os, sys\nimport bcc.cli\nimport numpy\n"
+            "print(os.environ.get('OPENBLAS_NUM_THREADS'), os.environ.get('OMP_NUM_THREADS'))")
+    env = {k: v for k, v in __import__("os").environ.items() if not k.endswith("_NUM_THREADS")}
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env).stdout
+    assert out.split() == ["1", "1"]
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                         env={**env, "OPENBLAS_NUM_THREADS": "4"}).stdout
+    assert out.split() == ["4", "1"]
