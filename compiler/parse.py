@@ -165,17 +165,21 @@ def _name(tok: Token) -> str:
 _FLAT = {"args", "effects", "block", "elif", "init", "start_expr", "start_effects"}
 # Chains of one operator, rebuilt as balanced trees: rule -> operator (None: the rule is the operator).
 _CHAINS = {"and_": None, "or_": None}
-_ASSOCIATIVE = {"+", "*"}
+# Binary operators whose chains are rebuilt: `+` and `-` are one family (a long
+# `a - b + c - d ...` becomes (a + c + ...) - (b + d + ...), both sums balanced; exact on
+# whole numbers, and interval bounds come out the same), `*` its own.
+_FAMILY = {"+": "+-", "-": "+-", "*": "*"}
 
 
 def _chain(tree: Tree) -> tuple[list, list] | None:
-    """The operands and operator tokens of a left-nested chain of one associative operator
+    """The operands and operator tokens of a left-nested chain of one operator or family
     (`a and b and c` parses as and_(and_(a, b), c)), or None for any other node."""
     if tree.data in _CHAINS:
         same = lambda t: isinstance(t, Tree) and t.data == tree.data  # noqa: E731
-    elif tree.data == "binop" and str(tree.children[1]) in _ASSOCIATIVE:
-        op = str(tree.children[1])
-        same = lambda t: isinstance(t, Tree) and t.data == "binop" and str(t.children[1]) == op  # noqa: E731
+    elif tree.data == "binop" and str(tree.children[1]) in _FAMILY:
+        family = _FAMILY[str(tree.children[1])]
+        same = lambda t: (isinstance(t, Tree) and t.data == "binop"  # noqa: E731
+                          and _FAMILY.get(str(t.children[1])) == family)
     else:
         return None
     items, ops, node = [], [], tree
@@ -191,6 +195,22 @@ def _chain(tree: Tree) -> tuple[list, list] | None:
 KEEP_SHAPE = 16   # chains up to this long keep the parser's left-nested shape
 
 
+def _split_signs(items: list, ops: list) -> tuple | None:
+    """A long `+`/`-` chain's added operands and subtracted ones, each with `+` tokens to
+    join them (borrowing the positions of the operators they replace); None if no `-`."""
+    if not any(str(op) == "-" for op in ops):
+        return None
+    plus = lambda op: op if str(op) == "+" else Token.new_borrow_pos("ADD_OP", "+", op)  # noqa: E731
+    pos, pos_ops, neg, neg_ops = [items[0]], [], [], []
+    for op, item in zip(ops, items[1:]):
+        side, side_ops = (neg, neg_ops) if str(op) == "-" else (pos, pos_ops)
+        if side:
+            side_ops.append(plus(op))
+        side.append(item)
+    minus = next(op for op in ops if str(op) == "-")
+    return pos, pos_ops, neg, neg_ops, minus
+
+
 def _balanced(rule: str, items: list, ops: list):
     """The tree of a chain: left-nested as written (`a and b and c` is and(and(a, b), c))
     up to KEEP_SHAPE operands, so ordinary expressions keep their shape; a longer chain is
@@ -204,14 +224,21 @@ def _balanced(rule: str, items: list, ops: list):
         for op, item in zip(ops, items[1:]):
             node = join(op, node, item)
         return node
+    signs = _split_signs(items, ops) if rule == "binop" else None
+    if signs is not None:
+        pos, pos_ops, neg, neg_ops, minus = signs
+        return join(minus, _balanced(rule, pos, pos_ops), _balanced(rule, neg, neg_ops))
     mid = (len(items) + 1) // 2
     return join(ops[mid - 1], _balanced(rule, items[:mid], ops[:mid - 1]), _balanced(rule, items[mid:], ops[mid:]))
 
 
-def _chain_depth(n: int) -> int:
+def _chain_depth(n: int, ops: list = ()) -> int:
     """The nesting `_balanced` adds over its deepest operand, for n operands."""
     if n <= KEEP_SHAPE:
         return n - 1
+    minus = sum(str(op) == "-" for op in ops)
+    if minus:
+        return 1 + max(_chain_depth(n - minus), _chain_depth(minus))
     return 1 + _chain_depth((n + 1) // 2)
 
 
@@ -246,7 +273,7 @@ def _build(tree: Tree):
             tree_node, ops, n = node
             args = values[len(values) - n:]
             del values[len(values) - n:]
-            depth = max(d for _, d in args) + _chain_depth(n)
+            depth = max(d for _, d in args) + _chain_depth(n, ops)
             value = _balanced(tree_node.data, [v for v, _ in args], ops)
             where = tree_node.meta
         if depth > MAX_EXPRESSION_DEPTH:

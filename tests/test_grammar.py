@@ -87,6 +87,37 @@ def test_chains_keep_their_shape_and_only_long_ones_are_balanced():
     assert depth(long) < 2 * KEEP_SHAPE   # log2(4) levels of splitting over chains of at most KEEP_SHAPE
 
 
+def _value(node) -> int:
+    """Whole-number value of a parsed +, -, * tree over numbers (an evaluator written here)."""
+    if isinstance(node, Int):
+        return node.value
+    if isinstance(node, Neg):
+        return -_value(node.operand)
+    left, right = _value(node.left), _value(node.right)
+    return {"+": left + right, "-": left - right, "*": left * right}[node.op]
+
+
+def test_mixed_plus_minus_chains_keep_their_shape_and_long_ones_stay_shallow():
+    from bcc.compiler.parse import KEEP_SHAPE, MAX_EXPRESSION_DEPTH
+    assert E("a + b - c + d") == BinOp("+", BinOp("-", BinOp("+", a, b), c), d)
+    # 150 subtractions used to count as 150 levels and were refused; now
+    # (10 + ...) - (1 + 1 + ...) with both sums balanced: about log2(150) levels.
+    long = E("10" + " - 1" * 150)
+    assert _value(long) == 10 - 150
+    assert "nested" not in str(E("x == 10" + " - 1" * 150 + " + 2" * 40))  # parses, no error
+    assert 4 * KEEP_SHAPE < 150 and MAX_EXPRESSION_DEPTH < 150
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["+", "-", "*"]), st.integers(-9, 9)), min_size=1, max_size=80),
+       st.integers(-9, 9))
+def test_long_arithmetic_chains_keep_their_value(tail, first):
+    """Any chain of + - * over numbers parses to a tree with Python's value for the text
+    (* binds tighter; balancing and the +/- split must not change the result)."""
+    text = str(first) + "".join(f" {op} {n}" if n >= 0 else f" {op} ({n})" for op, n in tail)
+    assert _value(E(text)) == eval(text)  # noqa: S307 - digits and + - * only, built above
+
+
 @pytest.mark.parametrize("text,tree", [
     ("a + b * c", BinOp("+", a, BinOp("*", b, c))),
     ("a * b + c", BinOp("+", BinOp("*", a, b), c)),
