@@ -8,6 +8,7 @@ appear only at the edges: `decode`, `describe`, `action_names`.
 from __future__ import annotations
 
 import array
+import functools
 import sys
 from dataclasses import dataclass, field
 from typing import Callable, Iterable
@@ -36,6 +37,17 @@ def cell_entries(diff) -> Iterable[int]:
 
 def pack_entry(index: int, value: int) -> bytes:
     return ((index << 8) | value).to_bytes(4, "little")
+
+
+def fresh_from(live: Callable, s: bytes, seen: dict, out: list) -> int:
+    """`Model.search_fresh` over a function listing (action, next state) pairs: for models
+    without a generated one, and for states that already fail."""
+    nexts = live(s)
+    for _, t in nexts:
+        if t not in seen:
+            seen[t] = s
+            out.append(t)
+    return len(nexts)
 
 
 @dataclass(frozen=True)
@@ -140,6 +152,7 @@ class Model:
     search_actions: tuple = ()                 # the actions `successors` generates (irrelevant ones pruned)
     lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
     live_successors: Callable | None = None    # successors for search (see `search_successors`)
+    fresh_successors: Callable | None = None   # live fused with a duplicate check (see `search_fresh`)
 
     def data(self, name: str, **options):
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
@@ -154,6 +167,16 @@ class Model:
             return self.live_successors
         successors, failure, goal = self.successors, self.is_failure, self.is_goal
         return lambda s: [(a, n) for a, n in successors(s) if n != s and (not failure(n) or goal(n))]
+
+    def search_fresh(self) -> Callable[[bytes, dict, list], int]:
+        """`fresh(s, seen, out) -> generated`: `search_successors` fused with the duplicate
+        check of a search whose first path to a state is a cheapest one (breadth-first,
+        blind with equal costs): each next state not yet a key of `seen` is stored there
+        with `s` (its parent) and appended to `out`; it returns how many next states there
+        were, duplicates included. Generated with the model where it can be."""
+        if self.fresh_successors is not None and self.live_successors is not None:
+            return self.fresh_successors
+        return functools.partial(fresh_from, self.search_successors())
 
     def view(self, state: bytes) -> StateView:
         """The one accessor for reading a state's variables and cells."""

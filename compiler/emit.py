@@ -19,7 +19,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import BccError, InternalError, ModelError
-from ..model import cell_entries, pack_entry
+from ..model import cell_entries, fresh_from, pack_entry
 from . import ir
 from .layout import Layout
 
@@ -81,6 +81,27 @@ def _writes_any(effects, variables: set, layout: Layout) -> bool:
     return False
 
 
+def _delta_slots(effects, layout: Layout) -> set | None:
+    """The state indices the effects may write, when each is written at most once on any
+    path and all are fixed variables (no cell, no keyed write); else None. Such an action
+    can build its next state as one integer sum (`_new_state`)."""
+    out: set = set()
+    for e in effects:
+        if isinstance(e, ir.When):
+            then, orelse = _delta_slots(e.then, layout), _delta_slots(e.orelse, layout)
+            if then is None or orelse is None:
+                return None
+            these = then | orelse
+        elif isinstance(e, ir.SetVar):
+            these = {layout.by_var[e.var].index}
+        else:
+            return None
+        if out & these:
+            return None
+        out |= these
+    return out
+
+
 def _constant_stores(effects, layout: Layout) -> list:
     """[(state index, stored byte)] when every effect sets a variable to a constant
     unconditionally (the action changes nothing where all already hold), else []."""
@@ -107,6 +128,8 @@ class Emitter:
         self.cell_base = 0 if compact else layout.grid_base
         self.uses_cells = False   # set while emitting a function that reads cells
         self.state = "s"          # the name variable reads come from (the failure test reads `t`)
+        self.delta = False        # stores add to `_d` (see `_new_state`) instead of writing `n`
+        self.uses_int = False     # set while emitting a function that builds states as sums
         self.known: dict = {}     # IR local name -> (lo, hi) its preconditions so far guarantee
         self.ns: dict = {"SG": layout.static_grid, "ModelError": ModelError}
         self.tables: dict = {}
@@ -158,12 +181,19 @@ class Emitter:
         def out_of_range(label, v, lo, hi):
             raise ModelError(f"{label} would become {v}, outside its range [{lo}, {hi}]")
 
-        @functools.lru_cache(maxsize=1024)
+        expanded: dict = {}   # diff -> cells; generated code reads it first (`_CC.get`)
+        keep = max(1024, (16 << 20) // max(1, len(S0)))   # about 16 MB of expansions at most
+
         def expand(diff):
-            c = bytearray(S0)
-            for e in cell_entries(diff):
-                c[e >> 8] = e & 255
-            return bytes(c)
+            c = expanded.get(diff)
+            if c is None:
+                if len(expanded) >= keep:
+                    expanded.clear()
+                c = bytearray(S0)
+                for e in cell_entries(diff):
+                    c[e >> 8] = e & 255
+                c = expanded[diff] = bytes(c)
+            return c
 
         def cells(s):
             """The mutable cells of compact state `s`, expanded: the start's when nothing
@@ -187,7 +217,7 @@ class Emitter:
             return bytes(n)
 
         self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,
-                       _merge=merge, _S0=S0, _expand=expand)
+                       _merge=merge, _S0=S0, _expand=expand, _CC=expanded, _from_bytes=int.from_bytes)
 
     # ---- expressions -------------------------------------------------------------------
     def simple(self, node) -> bool:
@@ -338,13 +368,34 @@ class Emitter:
             v = int(value.value)
             if not lo <= v <= hi:
                 raise BccError(f"an effect sets {label} to {v}, outside its range [{lo}, {hi}]")
-            return [f"{indent}n[{index}] = {v - lo}"]
+            return [self._put(index, str(v - lo), indent, value, hi - lo)]
         if value.type != "int" or self.within(value, lo, hi):
-            return [f"{indent}n[{index}] = {self.ex(value)}" + (f" - {lo}" if lo else "")]
+            return [self._put(index, self.ex(value) + (f" - {lo}" if lo else ""), indent, value, hi - lo)]
         t = f"_t{next(self.tmp)}"
         return [f"{indent}{t} = {self.ex(value)}",
                 f"{indent}if not {lo} <= {t} <= {hi}: _range({label!r}, {t}, {lo}, {hi})",
-                f"{indent}n[{index}] = {t}" + (f" - {lo}" if lo else "")]
+                self._put(index, t + (f" - {lo}" if lo else ""), indent)]
+
+    def _put(self, index: str, stored: str, indent: str, value=None, span: int = 255) -> str:
+        """Store byte `stored` at state index `index`: into the copy `n`, or, building the
+        next state as a sum (`self.delta`), add its change at that byte to `_d`. A change
+        that depends on that byte alone (a constant, a turn `(d + 1) % 4`) is read from a
+        table of its shifted values, one per old value (0..span)."""
+        if not self.delta:
+            return f"{indent}n[{index}] = {stored}"
+        shift = 8 * int(index)
+        change = f"({stored} - s[{index}])"
+        if value is not None and not ir.locals_of(value):
+            reads, complex_ = _var_reads(value)
+            if not complex_ and {self.L.by_var[v].index for v in reads} <= {int(index)}:
+                code = compile(f"{change} << {shift}", "<bcc table>", "eval")
+                old = bytearray(int(index) + 1)
+                values = []
+                for b in range(span + 1):
+                    old[int(index)] = b
+                    values.append(eval(code, self.ns, {"s": old}))
+                return f"{indent}_d += {self.table(tuple(values))}[s[{index}]]"
+        return f"{indent}_d += {change} << {shift}" if shift else f"{indent}_d += {change}"
 
     def store_cell(self, e: ir.SetCell, indent: str, action: str) -> list[str]:
         L = self.L
@@ -410,9 +461,25 @@ class Emitter:
                 continue
             self.known[local.name] = (lo, hi)
 
-    def _new_state(self, a: GroundAction, indent: str) -> tuple[list[str], str]:
-        """Lines that make the next state `n` and apply a's effects, and the expression of
-        the finished state."""
+    def _new_state(self, a: GroundAction, indent: str, sums: bool = False) -> tuple[list[str], str]:
+        """Lines that make the next state and apply a's effects, and the expression of the
+        finished state. With `sums`, an action that writes only fixed variables, each at
+        most once, builds it as one integer: `_I` (the state read as a little-endian int)
+        plus each written byte's change shifted to its place, turned back into bytes
+        (`_L` long, so the changed cells after the variables are kept): one object per
+        next state instead of a bytearray copy and its bytes copy."""
+        if sums and self.compact and _delta_slots(a.effects, self.L) is not None:
+            self.delta = self.uses_int = True
+            try:
+                lines = [f"{indent}_d = 0"] + self.effects(a.effects, indent, a.name)
+            finally:
+                self.delta = False
+            first = f"{indent}_d += "
+            if len(lines) > 1 and lines[1].startswith(first):
+                if len(lines) == 2:   # one unconditional store: no `_d` at all
+                    return [], f"(_I + {lines[1][len(first):]}).to_bytes(_L, 'little')"
+                lines[:2] = [f"{indent}_d = " + lines[1][len(first):]]
+            return lines, "(_I + _d).to_bytes(_L, 'little')"
         lines = [f"{indent}n = bytearray(s)"]
         writes_cells = self.compact and _writes_cells(a.effects)
         if writes_cells:
@@ -423,24 +490,35 @@ class Emitter:
     def _function(self, header: str, body: list[str]) -> str:
         """A function whose body reads cells gets their expansion as its first line."""
         nv = self.L.grid_base   # inline `_cells(s)`: most states changed no cell
-        prologue = [f"    c = _S0 if len(s) == {nv} else _expand(s[{nv}:])"] if self.compact and self.uses_cells else []
-        self.uses_cells = False
+        prologue = [f"    c = _S0 if len(s) == {nv} else _CC.get(s[{nv}:]) or _expand(s[{nv}:])"] \
+            if self.compact and self.uses_cells else []
+        if self.uses_int:
+            prologue.append("    _I = _from_bytes(s, 'little'); _L = len(s)")
+        self.uses_cells = self.uses_int = False
         return "\n".join([header] + prologue + body)
 
-    def successors_source(self, actions: list[GroundAction], search: list[int], failure=None) -> str:
+    def successors_source(self, actions: list[GroundAction], search: list[int], failure=None,
+                          fresh: bool = False) -> str:
         """`successors(s)`: every applicable search action and its next state. With
         `failure` (the failure condition), `live(s)` instead: the same, less next states
         equal to `s` (an action whose constant writes change nothing is not even tried)
         and failure states that are not goals -- what a search keeps. The failure test
         runs only after actions that write a variable it reads; a state that already fails
-        goes through `_live_slow`."""
+        goes through `_live_slow`.
+
+        With `fresh` too, `fresh(s, seen, out)`: the search's inner loop fused with `live`
+        for searches whose first path to a state is a cheapest one (breadth-first, blind
+        search with equal costs). Each next state not yet a key of `seen` becomes one,
+        with `s` as its value (its parent), and is appended to `out`; it returns how many
+        next states `live` would have listed (duplicates included). No pair, no list."""
         self.uses_cells = False
         live = failure is not None
         reads, complex_failure = _var_reads(failure) if live else (set(), False)
         failure_false = live and isinstance(failure, ir.Const) and not failure.value
-        lines = ["    out = []"]
+        lines = ["    _k = 0"] if fresh else ["    out = []"]
         if live and not failure_false:
-            lines.append(f"    if {self.ex(failure)}: return _live_slow(s)")
+            slow = "_fresh_slow(s, seen, out)" if fresh else "_live_slow(s)"
+            lines.append(f"    if {self.ex(failure)}: return {slow}")
         for i in search:
             a = actions[i]
             lines.append(f"    # action {i}")  # a number, never the name: comments carry no input text
@@ -456,16 +534,28 @@ class Emitter:
                 if consts:
                     lines.append(f"{indent}if {' or '.join(f's[{k}] != {v}' for k, v in consts)}:")
                     indent += "    "
-            made, result = self._new_state(a, indent)
+            made, result = self._new_state(a, indent, sums=True)
             lines += made
             if live and not failure_false and (complex_failure or _writes_any(a.effects, reads, self.L)):
                 lines.append(f"{indent}t = {result}")
                 lines.append(f"{indent}if not {self.failure_on_t(failure)} or goal(t):")
-                lines.append(f"{indent}    out.append(({i}, t))")
+                lines += self._keep(i, "t", indent + "    ", fresh)
             else:
-                lines.append(f"{indent}out.append(({i}, {result}))")
-        lines.append("    return out")
-        return self._function(f"def {'live' if live else 'successors'}(s):", lines)
+                lines += self._keep(i, result, indent, fresh)
+        lines.append("    return _k" if fresh else "    return out")
+        name = "fresh" if fresh else "live" if live else "successors"
+        return self._function(f"def {name}(s, seen, out):" if fresh else f"def {name}(s):", lines)
+
+    @staticmethod
+    def _keep(i: int, state: str, indent: str, fresh: bool) -> list[str]:
+        """Lines that hand on next state `state` of action `i`."""
+        if not fresh:
+            return [f"{indent}out.append(({i}, {state}))"]
+        lines = [] if state == "t" else [f"{indent}t = {state}"]
+        return lines + [f"{indent}_k += 1",
+                        f"{indent}if t not in seen:",
+                        f"{indent}    seen[t] = s",
+                        f"{indent}    out.append(t)"]
 
     def failure_on_t(self, failure) -> str:
         """The failure test of next state `t`: inline when it reads only variables."""
@@ -502,7 +592,8 @@ class Emitter:
 
     def build(self, actions: list[GroundAction], goal, failure, search: list[int]) -> tuple[dict, str]:
         """`search`: the actions `successors` generates (all but those pruned as irrelevant)."""
-        parts = [self.successors_source(actions, search), self.successors_source(actions, search, failure)]
+        parts = [self.successors_source(actions, search), self.successors_source(actions, search, failure),
+                 self.successors_source(actions, search, failure, fresh=True)]
         parts += [self.apply_source(i, a) for i, a in enumerate(actions)]
         parts.append(self.predicate_source("goal", goal))
         parts.append(self.predicate_source("failure", failure))
@@ -510,5 +601,8 @@ class Emitter:
         ns = dict(self.ns)
         exec(compile(source, "<bcc model>", "exec"), ns)
         successors, fails, goal = ns["successors"], ns["failure"], ns["goal"]
-        ns["_live_slow"] = lambda s: [(a, n) for a, n in successors(s) if n != s and (not fails(n) or goal(n))]
+        ns["_live_slow"] = live_slow = \
+            lambda s: [(a, n) for a, n in successors(s) if n != s and (not fails(n) or goal(n))]
+        ns["_fresh_slow"] = functools.partial(fresh_from, live_slow)
         return ns, source
+

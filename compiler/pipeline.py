@@ -134,6 +134,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["live"],
+        fresh_successors=ns["fresh"],
         apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
         why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),

@@ -24,7 +24,7 @@ import heapq
 import math
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result
+from .base import Budget, Meter, Result, budget_result, parent_plan
 from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
@@ -49,6 +49,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
         switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
     h = HEURISTICS[used](model)
     zero = used == "blind"
+    if zero and len(set(model.action_costs)) <= 1:
+        return _layered(model, meter, name)
     start = model.initial
     h0 = h(start)
     # One map for everything known about a state: (g, parent state, action). A state is
@@ -126,6 +128,42 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
                 entries.append(nxt)
     return result(solved=False, status="no_solution", expanded=expanded, generated=generated,
                   message="no plan exists: every reachable state was explored")
+
+
+def _layered(model: Model, meter: Meter, name: str) -> Result:
+    """Blind A* when every action costs the same: f = g orders states by depth, so the
+    open list is the layer being expanded (last in, first out, as the buckets would) and
+    the next one. A state's first path is then a cheapest one, so the loop keeps only
+    parents and drops every state seen before inside `Model.search_fresh`."""
+    start, budget = model.initial, meter.budget
+    parents = {start: None}
+    fresh, is_goal = model.search_fresh(), model.is_goal
+    mask, max_states = meter.mask, budget.max_states
+    expanded = generated = 0
+    layer: list = [start]
+    while layer:
+        below: list = []
+        pop = layer.pop
+        while layer:
+            state = pop()
+            if is_goal(state):
+                plan, cost = parent_plan(model, parents, state)
+                return meter.finish(Result(solver=name, solved=True, status="solved", plan=plan, cost=cost,
+                                           expanded=expanded, generated=generated, stored=len(parents),
+                                           heuristic="blind", initial_h=0))
+            expanded += 1
+            if not expanded & mask or max_states is not None and len(parents) > max_states:
+                which = meter.check(expanded, generated, len(parents))
+                mask = meter.mask
+                if which:
+                    r = budget_result(name, which, meter, expanded, generated, len(parents))
+                    r.heuristic, r.initial_h = "blind", 0
+                    return r
+            generated += fresh(state, parents, below)
+        layer = below
+    return meter.finish(Result(solver=name, solved=False, status="no_solution", expanded=expanded,
+                               generated=generated, stored=len(parents), heuristic="blind", initial_h=0,
+                               message="no plan exists: every reachable state was explored"))
 
 
 def _plan(model: Model, nodes: dict, state) -> tuple[list[str], int]:

@@ -138,3 +138,18 @@ def extract_plan(model: Model, parents: dict, state: bytes) -> tuple[list[str], 
         actions.append(a)
     actions.reverse()
     return [model.action_names[a] for a in actions], sum(model.action_costs[a] for a in actions)
+
+
+def parent_plan(model: Model, parents: dict, state: bytes) -> tuple[list[str], int]:
+    """The plan to `state` from a map that keeps only each state's parent (state -> previous
+    state, None at the start; see `Model.search_fresh`): each step's action is recovered
+    as the cheapest one leading from the parent to the child."""
+    costs, chain = model.action_costs, []
+    while True:
+        parent = parents[state]
+        if parent is None:
+            break
+        chain.append(min((a for a, n in model.successors(parent) if n == state), key=lambda a: (costs[a], a)))
+        state = parent
+    chain.reverse()
+    return [model.action_names[a] for a in chain], sum(costs[a] for a in chain)

@@ -4,15 +4,17 @@ With differing costs it finds a plan of fewest steps; its reported cost is still
 plan's true sum of costs, and its message says it may not be the cheapest.
 
 The goal test runs when a state is generated, one layer earlier than at expansion.
-Successors come from `Model.search_successors`: states in which the episode fails (e.g.
-the agent died) are left out there, unless they are goals, and so are self-loops.
+Successors come from `Model.search_fresh`, which also drops those seen before: states in
+which the episode fails (e.g. the agent died) are left out there, unless they are goals,
+and so are self-loops. Only each state's parent is kept; the plan's actions are recovered
+at the end.
 """
 from __future__ import annotations
 
 from collections import deque
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result, extract_plan
+from .base import Budget, Meter, Result, budget_result, parent_plan
 from .options import declare
 
 
@@ -25,10 +27,11 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
     if model.is_goal(start):
         return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=[], cost=0, expanded=0,
                                    generated=1, stored=1))
-    successors, is_goal = model.search_successors(), model.is_goal
+    fresh, is_goal = model.search_fresh(), model.is_goal
     frontier = deque([start])
-    append, popleft = frontier.append, frontier.popleft
+    extend, popleft = frontier.extend, frontier.popleft
     expanded = generated = 0
+    new: list = []   # this expansion's next states not seen before
     while frontier:
         state = popleft()
         expanded += 1
@@ -37,20 +40,18 @@ def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
             mask = meter.mask
             if which:
                 return budget_result("bfs", which, meter, expanded, generated, len(parents))
-        nexts = successors(state)
-        generated += len(nexts)
-        for action, nxt in nexts:
-            if nxt in parents:
-                continue
-            parents[nxt] = (state, action)
-            if is_goal(nxt):
-                plan, cost = extract_plan(model, parents, nxt)
-                note = "" if len(set(model.action_costs)) <= 1 else \
-                    "fewest steps; actions' costs differ, so a cheaper plan may exist (astar finds it)"
-                return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=plan, cost=cost,
-                                           expanded=expanded, generated=generated, stored=len(parents),
-                                           message=note))
-            append(nxt)
+        generated += fresh(state, parents, new)
+        if new:
+            for nxt in new:
+                if is_goal(nxt):
+                    plan, cost = parent_plan(model, parents, nxt)
+                    note = "" if len(set(model.action_costs)) <= 1 else \
+                        "fewest steps; actions' costs differ, so a cheaper plan may exist (astar finds it)"
+                    return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=plan, cost=cost,
+                                               expanded=expanded, generated=generated, stored=len(parents),
+                                               message=note))
+            extend(new)
+            new.clear()
     return meter.finish(Result(solver="bfs", solved=False, status="no_solution", expanded=expanded,
                                generated=generated,
                                stored=len(parents), message="no plan exists: every reachable state was explored"))

@@ -187,7 +187,10 @@ ALLOWED_NAMES = {"def", "return", "if", "else", "elif", "not", "and", "or", "in"
                  "goal", "failure", "SG", "_cell", "_set_cell", "_index", "_range", "ModelError",
                  "c", "w", "_cells", "_merge",   # compact states: expanded cells, cell writes
                  "len", "_S0", "_expand",        # ... the start's cells, or a changed state's expanded
-                 "live", "t", "_live_slow"}      # successors for search: the next state, failing starts
+                 "live", "t", "_live_slow",      # successors for search: the next state, failing starts
+                 "_CC", "get",                   # ... expansions already made, per diff
+                 "_I", "_L", "_d", "_from_bytes", "to_bytes",   # next states built as one integer sum
+                 "fresh", "seen", "_k", "_fresh_slow"}          # fused with the duplicate check
 
 
 @pytest.mark.parametrize("name", shipped_dungeons())
