@@ -142,7 +142,7 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
             result = solve(model, deadline.remaining(), progress=progress, **options)
             clear_progress(progress)
     except BudgetExceeded as exc:  # ran out outside a solver's own checks (compiling, a heuristic's table, ...)
-        result = exceeded_result(solver, exc.which, deadline.elapsed())
+        result = exceeded_result(solver, exc.which, deadline)
     if output and result.solved:
         write_output(output, "".join(a + "\n" for a in result.plan))
     name, path, goal_text = (dungeon, dungeon, goal) if model is None else (model.name, model.path, model.goal_text)

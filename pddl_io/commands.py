@@ -98,7 +98,7 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
                                               **options)
             clear_progress(progress)
     except BudgetExceeded as exc:
-        result = exceeded_result(solver, exc.which, deadline.elapsed())
+        result = exceeded_result(solver, exc.which, deadline)
     if output and result.solved:
         write_text(output, "".join(a + "\n" for a in result.plan))
     report = model.report if model is not None else {}

@@ -68,6 +68,10 @@ def table_growth_mb(stored: int, growth: int, tables: int = 2) -> float:
 class Meter:
     """Time, memory and progress bookkeeping for a search loop."""
 
+    # The newest Meter of this process: a run stopped outside its loop's checks (by
+    # `limits.hard_limits`) still reports the counters of its last check.
+    latest: "Meter | None" = None
+
     def __init__(self, budget: Budget, progress: Callable | None = None):
         self.budget, self.progress = budget, progress
         self.start = time.perf_counter()
@@ -80,6 +84,8 @@ class Meter:
         # they come more than CHECK_GAP apart (a costly heuristic expands a few hundred
         # states a second), so a limit is seen within about CHECK_GAP.
         self.mask = 0
+        self.counts = (0, 0, 0)   # (expanded, generated, stored) at the last check
+        Meter.latest = self
 
     def elapsed(self) -> float:
         return time.perf_counter() - self.start
@@ -87,6 +93,7 @@ class Meter:
     def check(self, expanded: int, generated: int, stored: int) -> str | None:
         """Called when `expanded & self.mask` is 0: the exhausted budget's name, or None."""
         b = self.budget
+        self.counts = (expanded, generated, stored)
         if b.max_states is not None and stored > b.max_states:
             return "max_states"
         now = time.perf_counter()

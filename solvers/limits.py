@@ -16,10 +16,15 @@ import signal
 import threading
 import time
 
-from .base import BUDGET_WORDS, Budget, Result
+from .base import BUDGET_WORDS, Budget, Meter, Result
 from .memory import arm_cap, disarm_cap, peak_rss_mb
 
-GRACE_SECONDS = 0.5   # the cooperative check normally stops first; the timer only backs it up
+# The cooperative check normally stops first; the timer only backs it up, after a grace of
+# 0.5 s or 2 % of the limit, whichever is longer: on a busy machine a process may get a
+# fifth of a core, and one step between two checks (a big table's resize) then takes
+# seconds of wall time, which lost a 150 s run's counters to the timer.
+GRACE_SECONDS = 0.5
+GRACE_SHARE = 0.02
 REPEAT_SECONDS = 0.25  # how often the timer fires again once the limit is spent
 
 
@@ -32,11 +37,13 @@ class BudgetExceeded(Exception):
 
 
 @contextlib.contextmanager
-def hard_limits(budget: Budget, grace: float = GRACE_SECONDS):
+def hard_limits(budget: Budget, grace: float | None = None):
     """Enforce `budget`'s time and memory on everything run inside (main thread only;
     elsewhere, or without /proc and rlimits, the solvers' own checks still apply)."""
     timer = budget.time_limit is not None and threading.current_thread() is threading.main_thread()
     if timer:
+        if grace is None:
+            grace = max(GRACE_SECONDS, GRACE_SHARE * budget.time_limit)
         def expire(signum, frame):
             raise BudgetExceeded("time_limit")
         old_handler = signal.signal(signal.SIGALRM, expire)
@@ -76,7 +83,11 @@ class Deadline:
         return Budget(max_states=b.max_states, time_limit=left * share, max_memory_mb=b.max_memory_mb)
 
 
-def exceeded_result(solver: str, which: str, seconds: float) -> Result:
-    """The result of a run stopped by `hard_limits` (its counters were lost with it)."""
-    return Result(solver=solver, solved=False, status="budget", budget=which, seconds=round(seconds, 6),
+def exceeded_result(solver: str, which: str, deadline: Deadline) -> Result:
+    """The result of a run stopped by `hard_limits`: the search's own counters went with
+    it, so those of its last budget check stand in (zeros if no search began)."""
+    meter = Meter.latest
+    expanded, generated, stored = meter.counts if meter is not None and meter.start >= deadline.start else (0, 0, 0)
+    return Result(solver=solver, solved=False, status="budget", budget=which, seconds=round(deadline.elapsed(), 6),
+                  expanded=expanded, generated=generated, stored=stored,
                   peak_mb=round(peak_rss_mb(), 1), message=f"stopped: {BUDGET_WORDS[which]} ran out")

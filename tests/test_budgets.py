@@ -160,3 +160,25 @@ def test_a_swallowed_time_limit_fires_again():
                 pass                  # lost, as if raised where Python cannot propagate it
             time.sleep(5)
     assert time.monotonic() - start < 2
+
+
+def test_the_backup_timer_waits_half_a_second_or_two_percent_of_the_limit():
+    from bcc.solvers import Budget
+    from bcc.solvers.limits import hard_limits
+    for limit, grace in ((5, 0.5), (150, 3.0)):
+        with hard_limits(Budget(time_limit=limit)):
+            assert abs(signal.getitimer(signal.ITIMER_REAL)[0] - (limit + grace)) < 0.2
+
+
+def test_a_run_the_timer_stops_reports_the_counters_of_its_last_check():
+    """A 150 s solve stopped by the backup timer (not its own check) printed `0 expanded`."""
+    from bcc.solvers import Budget
+    from bcc.solvers.base import Meter
+    from bcc.solvers.limits import Deadline, exceeded_result
+    deadline = Deadline(Budget(time_limit=1))
+    meter = Meter(Budget(time_limit=1))
+    assert meter.check(4096, 20000, 15000) is None
+    r = exceeded_result("astar", "time_limit", deadline)
+    assert (r.status, r.budget, r.expanded, r.generated, r.stored) == ("budget", "time_limit", 4096, 20000, 15000)
+    # A search of an earlier command in this process is not this command's.
+    assert exceeded_result("astar", "time_limit", Deadline(Budget(time_limit=1))).expanded == 0
