@@ -33,8 +33,8 @@ class Abstract:
         # Only Locals and Vars are pinned; testing every node would hash whole subtrees.
         if self.pins and isinstance(node, (ir.Local, ir.Var)) and node in self.pins:
             return self.pins[node]
-        m = getattr(self, "e_" + type(node).__name__, None)
-        return m(node) if m else None
+        m = _RULES.get(type(node))
+        return m(self, node) if m else None
 
     def e_Const(self, node):
         return frozenset({node.value})
@@ -176,6 +176,11 @@ class Abstract:
             if v is None or v != frozenset({not decisive}):
                 unknown = True
         return UNKNOWN_BOOL if unknown else frozenset({not decisive})
+
+
+# The rule of each IR node type (`Abstract.e_<type name>`), looked up once per node type.
+_RULES = {t: getattr(Abstract, "e_" + t.__name__) for t in vars(ir).values()
+          if isinstance(t, type) and hasattr(Abstract, "e_" + t.__name__)}
 
 
 def maybe_true(value) -> bool:

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from . import ir
 from .abstract import Abstract, maybe_true
 from .reachability import Analysis
-from .relevance import reads
+from .relevance import effect_reads_writes, reads
 
 MAX_PATTERN_STATES = 1_000_000
 
@@ -79,6 +79,11 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
     sizes = [len(r) for r in ranges]
     movers = [i for i in candidates if any(e.var in pattern for e in _top_sets(actions[i].effects))]
     pset = set(pattern)
+    # What an action does to a pattern state depends only on the pattern variables it
+    # reads (the other sets are fixed): a turn reads the facing alone, so it is evaluated
+    # for 4 facings, not for every (x, z, facing).
+    read_at = {i: [k for k, v in enumerate(pattern) if v in _action_reads(actions[i], an)] for i in movers}
+    outcomes: dict = {}
 
     def flat(values) -> int:
         i = 0
@@ -105,10 +110,14 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
             goals.append(here)
         for i in movers:
             a = actions[i]
-            ab = an.abstract(a, sets, reach.written)
-            if not an.applies(a, ab):
+            key = (i, tuple(values[k] for k in read_at[i]))
+            outcome = outcomes.get(key, False)
+            if outcome is False:
+                ab = an.abstract(a, sets, reach.written)
+                outcome = outcomes[key] = _writes(an, ab, a.effects, pattern, pset) if an.applies(a, ab) else None
+            if outcome is None:
                 continue
-            options = _next_values(an, ab, a.effects, pattern, pset, values)
+            options = _next_values(an, outcome, pattern, values)
             for nxt in itertools.product(*options):
                 there = flat(nxt)
                 if there != here:
@@ -134,8 +143,28 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
                            tuple(v.label for v in pattern))
 
 
-def _next_values(an, ab, effects, pattern, pset, current) -> list:
+def _action_reads(a, an) -> set:
+    lets = {loc.name: value for loc, value in a.lets}
+    r: set = set()
+    for c in a.pre:
+        reads(c, an, lets, r)
+    effect_reads_writes(a.effects, an, lets, r, set())
+    return r
+
+
+def _next_values(an, outcome, pattern, current) -> list:
     """Per pattern variable, the values it may have after the action (an over-approximation)."""
+    options, always = outcome
+    out = []
+    for var, cur in zip(pattern, current):
+        vals = options[var] if var in always else options[var] | {cur}
+        slot = an.L.by_var[var]
+        out.append(sorted(v for v in vals if slot.lo <= v <= slot.hi))
+    return out
+
+
+def _writes(an, ab, effects, pattern, pset) -> tuple:
+    """({pattern variable: values the action may write}, the variables it always writes)."""
     options = {v: set() for v in pattern}
     always = set()
 
@@ -154,9 +183,4 @@ def _next_values(an, ab, effects, pattern, pset, current) -> list:
                     always.add(e.var)
 
     walk(effects, True)
-    out = []
-    for var, cur in zip(pattern, current):
-        vals = options[var] if var in always else options[var] | {cur}
-        slot = an.L.by_var[var]
-        out.append(sorted(v for v in vals if slot.lo <= v <= slot.hi))
-    return out
+    return options, always
