@@ -112,6 +112,45 @@ def _abstract_reach(initial, exact_idx, cells, n_values, groups, max_states):
     return seen, written
 
 
+def _reachable_positions(domains: tuple, leaves: list, position: list, initial: bytes) -> tuple:
+    """The domains and leaves cut down to the positions the agent can reach: a flood over
+    the position bytes alone, from the start, through every leaf that writes one (its
+    other conditions assumed to hold, so every reachable position is kept). Leaves that
+    pin a position byte to a value no reachable position has never apply."""
+    if not position:
+        return domains, leaves
+    moves = []   # ({k: allowed values} of the position bytes a leaf tests, {k: written value})
+    for action_leaves in leaves:
+        for leaf in action_leaves:
+            if isinstance(leaf.result, dict) and any(i in leaf.result for i in position):
+                moves.append(({k: leaf.allowed[i] for k, i in enumerate(position) if i in leaf.allowed},
+                              {k: leaf.result[i] for k, i in enumerate(position) if i in leaf.result}))
+    by_place: dict = {}   # a leaf pinning every position byte, under its one position
+    anywhere = []
+    for pre, writes in moves:
+        if len(pre) == len(position) and all(len(vs) == 1 for vs in pre.values()):
+            by_place.setdefault(tuple(pre[k][0] for k in range(len(position))), []).append(writes)
+        else:
+            anywhere.append((pre, writes))
+    start = tuple(initial[i] for i in position)
+    seen, stack = {start}, [start]
+    while stack:
+        here = stack.pop()
+        nexts = list(by_place.get(here, ()))
+        nexts += [w for pre, w in anywhere if all(here[k] in vs for k, vs in pre.items())]
+        for writes in nexts:
+            there = tuple(writes.get(k, v) for k, v in enumerate(here))
+            if there not in seen:
+                seen.add(there)
+                stack.append(there)
+    kept = {i: {p[k] for p in seen} for k, i in enumerate(position)}
+    domains = tuple(tuple(v for v in d if v in kept[i]) if i in kept else d for i, d in enumerate(domains))
+    leaves = [[leaf for leaf in action_leaves
+               if all(any(v in kept[i] for v in leaf.allowed[i]) for i in position if i in leaf.allowed)]
+              for action_leaves in leaves]
+    return domains, leaves
+
+
 def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
     """The fixpoint domains (see the module docstring); BccError past `max_states` abstract states."""
     from ..errors import BccError
@@ -127,9 +166,8 @@ def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
     dom = [{v} for v in initial]
     # The agent's position starts with its whole declared range: grown from the start, it
     # gains one value per round (one move), and every round re-grounds the actions over
-    # the larger domains -- rounds times leaves, 41 s on a 21x21 maze. Positions the agent
-    # never reaches only add operators that never fire (Fast Downward's translator drops
-    # them); a wider domain keeps the export exact.
+    # the larger domains -- rounds times leaves, 41 s on a 21x21 maze. The positions the
+    # agent can reach are cut back out of the final leaves (`_reachable_positions`).
     for v in model.variables:
         if v.index in position:
             dom[v.index] = set(range(v.hi - v.lo + 1))
@@ -169,6 +207,7 @@ def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
                 changed = True
         if not changed:
             if all(g == frozen for g in grounded_over):
+                frozen, leaves = _reachable_positions(frozen, leaves, sorted(position), initial)
                 return Domains(frozen, "fixpoint", len(seen), rounds, leaves)
             full = True
         else:

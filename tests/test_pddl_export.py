@@ -113,6 +113,30 @@ def test_fixpoint_domains_cover_every_reachable_state():
         assert all(v in task.domains.values[i] for i, v in enumerate(m.dense(s)))
 
 
+def test_position_domains_are_the_positions_the_agent_reaches(tmp_path):
+    # The fixpoint starts the position with its whole range (so it needs few rounds) and
+    # cuts it back by a flood over the moves. On a maze without stones (every state
+    # enumerable) the kept x and z values must be exactly those of reachable states,
+    # walls on the border included in the range but never reached.
+    path = tmp_path / "m.yaml"
+    path.write_text(generate_maze(11, 11, seed=5))
+    m = compile_dungeon(str(path))
+    task = build_task(m)
+    seen, stack = {m.initial}, [m.initial]
+    while stack:
+        for _, t in m.successors(stack.pop()):
+            if t not in seen:
+                seen.add(t)
+                stack.append(t)
+    for axis in (0, 2):
+        index = m.position[axis][0]
+        reached = {m.dense(s)[index] for s in seen}
+        assert set(task.domains.values[index]) == reached
+        assert len(reached) < m.variables[[v.index for v in m.variables].index(index)].hi + 1
+    assert task.stats["rounds"] <= 10   # grown one value per round from the start, it took 20
+    assert check_walks(m, task, walks=4, steps=60, seed=2) > 30
+
+
 @pytest.mark.slow
 def test_tough_maze_counts_stay_within_the_stones_that_exist():
     # A plain relaxed fixpoint would let every inventory count reach 64; the histogram
