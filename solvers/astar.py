@@ -11,6 +11,8 @@ of states (the last in is expanded first). With integer costs and w = 1 a key is
 (f << 32 | h; a fractional h is rounded up, which keeps it admissible since every plan
 costs an integer), so a push is an append and a pop a list pop; the heap only orders the
 few distinct keys. A state's g is read back from its key, so entries are bare states.
+Blind search with equal action costs expands the same states in the same order with no
+keys at all (`_layered`): layer by layer, over `Model.search_fresh`.
 
 Heuristic `auto` (the default) starts with the cheap `manhattan` and, if the search is
 still running after SWITCH_AFTER expansions, builds the pattern database and re-sorts the
