@@ -91,28 +91,42 @@ class Sym:
 
     def resolve(self):
         """The concrete value, forking on the byte if the live values disagree."""
-        live = self._live()
-        groups: dict = {}
-        for v, r in live.items():
-            groups.setdefault(_key(r), (r, set()))[1].add(v)
+        table, groups = self.table, {}
+        for v in self.run.values(self.var):
+            r = table[v]
+            key = ("err", id(r)) if r.__class__ is _Err else (r.__class__ is bool, r)
+            group = groups.get(key)
+            if group is None:
+                groups[key] = (r, [v])
+            else:
+                group[1].append(v)
         if len(groups) == 1:
             r = next(iter(groups.values()))[0]
         else:
             chosen = self.run.split(self.var, [frozenset(vs) for _, vs in groups.values()])
-            r = live[next(iter(chosen))]
+            r = table[next(iter(chosen))]
         if isinstance(r, _Err):
             raise r.exc
         return r
 
     def _map(self, fn):
-        live = self._live()
-        out = {}
-        for v, r in live.items():
-            out[v] = r if isinstance(r, _Err) else fn(r)
-        first = next(iter(out.values()))
-        if not isinstance(first, _Err) and all(not isinstance(r, _Err) and r == first and type(r) is type(first)
-                                               for r in out.values()):
-            return first  # constant over the live values: fold it
+        table, out = self.table, {}
+        for v in self.run.values(self.var):   # the live values (a hot loop of the export)
+            r = table[v]
+            out[v] = r if r.__class__ is _Err else fn(r)
+        return self._folded(out)
+
+    def _folded(self, out: dict):
+        """`out` (live value -> result) as a Sym, or its one result when all agree."""
+        results = iter(out.values())
+        first = next(results)
+        kind = first.__class__
+        if kind is not _Err:
+            for r in results:
+                if r.__class__ is not kind or r != first:
+                    break
+            else:
+                return first  # constant over the live values (same type, no error): fold it
         return Sym(self.run, self.var, out)
 
     def _bin(self, other, op, swap=False):
@@ -123,7 +137,16 @@ class Sym:
                 out = {v: (_apply(op, o[v], r) if swap else _apply(op, r, o[v])) for v, r in live.items()}
                 return Sym(self.run, self.var, out)._map(lambda r: r)
             other = other.resolve()
-        return self._map(lambda r: _apply(op, other, r) if swap else _apply(op, r, other))
+        table, out = self.table, {}
+        for v in self.run.values(self.var):   # _map(lambda r: _apply(op, r, other)), inlined: the hottest loop
+            r = table[v]
+            if r.__class__ is not _Err:
+                try:
+                    r = op(other, r) if swap else op(r, other)
+                except Exception as exc:  # noqa: BLE001 - kept per value, raised only if that value is chosen
+                    r = _Err(exc)
+            out[v] = r
+        return self._folded(out)
 
     def __add__(self, o): return self._bin(o, operator.add)
     def __radd__(self, o): return self._bin(o, operator.add, True)
@@ -147,10 +170,6 @@ class Sym:
     def __index__(self): return int(self.resolve())
     def __int__(self): return int(self.resolve())
     __hash__ = None
-
-
-def _key(r):
-    return ("err", id(r)) if isinstance(r, _Err) else (type(r) is bool, r)
 
 
 def _concrete(v):
