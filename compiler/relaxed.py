@@ -30,6 +30,7 @@ from .relaxed_eval import BAD, CellAtom, Drop, Evaluator, Fail, TooBig, conjunct
 MAX_GROUP = 4096        # largest product of value ranges a group of variables may have
 MAX_CONTEXTS = 200_000  # contexts (over all actions) before the view gives up
 SPLIT_LIMIT = 4         # leaves of an action's effect decision tree before effects are fired apart
+FIRE_LIMIT = 256        # cases of one fired effect's conditions per old value before they are relaxed
 COND_LIMIT = 4096       # leaves of one condition's decision tree before it is dropped (relaxed)
 
 
@@ -229,6 +230,9 @@ class Builder:
         self.or_facts: dict = {}     # frozenset of minterms -> aux fact
         self.fired: dict = {}        # (action, residual effects) -> aux fact
         self.fired_values: dict = {}  # fired fact -> (the atom it writes, the facts it may add)
+        self.fired_steps: dict = {}  # fired fact -> [(preconditions besides it, the fact added)]
+        self.step_costs: dict = {}   # op key -> its cost in the guiding view (fire_effects)
+        self.chained: set = set()    # fired facts whose steps cost their action's cost there
         # Caches keyed by the identity of residual IR (interned, relaxed_eval._mk), each
         # entry holding its key objects so that no id is reused while the builder lives.
         self.keep: list = []
@@ -297,7 +301,7 @@ class Builder:
                 self.op(self.minterm_facts(m), (f,), 0, -1)
         return (f,)
 
-    def op(self, pre, add, cost, action) -> None:
+    def op(self, pre, add, cost, action) -> tuple | None:
         add = tuple(sorted(set(add) - set(pre)))
         if add:
             key = (tuple(sorted(set(pre))), add, cost, action)
@@ -305,6 +309,8 @@ class Builder:
                 self.ops[key] = None
                 if self.live is not None:
                     self.live.add(key[0], add)
+            return key
+        return None
 
     # ---- conditions ----------------------------------------------------------------------
     def clusters(self, conds, env, limit=COND_LIMIT):
@@ -484,9 +490,11 @@ class Builder:
                 f = self.new_fact(f"fired:{a.name}#{len(self.fired)}")
                 self.fired[key] = f
                 self.keep.append(tops)   # their ids stay theirs
-                self.fire_effects(comp, f, atom)
+                self.fire_effects(comp, f, atom, a.cost)
             adds.append(f)
-        self.op(pre_facts, adds, a.cost, index)
+        key = self.op(pre_facts, adds, a.cost, index)
+        if key is not None and all(f in self.chained for f in adds):
+            self.step_costs[key] = 0   # its steps pay for it (fire_effects)
 
     def _written(self, top) -> frozenset:
         hit = self.written_cache.get(id(top))
@@ -496,17 +504,49 @@ class Builder:
             self.written_cache[id(top)] = (top, w)
         return w
 
-    def fire_effects(self, effects, fired: int, atom) -> None:
-        """Zero-cost operators, one per old value of the written atom: `fired` and
-        atom = old add every value the effects may give it (conditions that need other
-        atoms count as true and false: an over-approximation)."""
+    def fire_effects(self, effects, fired: int, atom, cost) -> None:
+        """Zero-cost operators, one per old value of the written atom (and, where the
+        effects' conditions read other atoms, per value of those: FIRE_LIMIT cases at most,
+        else those conditions count as true and false, an over-approximation): `fired`,
+        atom = old (and the conditions' facts) add the value the effects give the atom.
+
+        When the new value depends on the old (a count going up or down), the fired fact,
+        once reached, would walk the atom through every value for free: one execution
+        standing for many. Such steps cost the action's `cost` in the guiding view
+        (hadd, hff), so emptying a hand of k things counts k actions (an action whose only
+        effects are such steps is free there instead: its steps pay); hmax and LM-cut keep
+        the free steps, which never overestimate."""
         values = self.fired_values[fired] = (atom, set())
+        steps = self.fired_steps[fired] = []    # (preconditions besides `fired`, the fact added)
+        by_old: dict = {}
+        exact = [True]
         for old in self.domain(atom):
-            new = self.ev.candidates(effects, {atom: old}, atom, {})
-            if new:
-                adds = tuple(self.fact(atom, v) for v in new)
-                values[1].update(adds)
-                self.op((fired, self.fact(atom, old)), adds, 0, -1)
+            old_fact = self.fact(atom, old)
+            for minterm, new in self._steps(effects, atom, old, exact):
+                pre = (old_fact,) + self.minterm_facts(minterm)
+                f = self.fact(atom, new)
+                values[1].add(f)
+                steps.append((pre, f))
+                by_old.setdefault(old, set()).add(new)
+        chained = len({frozenset(v) for v in by_old.values()}) > 1   # else: one constant
+        if chained:
+            self.chained.add(fired)
+        for pre, f in steps:
+            key = self.op((fired,) + pre, (f,), 0, -1)
+            if chained and key is not None:
+                self.step_costs[key] = cost
+
+    def _steps(self, effects, atom, old, exact: list) -> list:
+        """[(minterm over other atoms, new value)] the effects may give `atom` from `old`;
+        `exact[0]` goes False (for the next old values too) once the cases are too many."""
+        try:
+            if not exact[0]:
+                raise TooBig()
+            leaves = self.ev.branch(lambda e: self.ev.simulate(effects, e, {}), {atom: old}, FIRE_LIMIT)
+        except (TooBig, Drop):
+            exact[0] = False
+            return [((), v) for v in self.ev.candidates(effects, {atom: old}, atom, {})]
+        return [(m, w[atom]) for m, w in leaves if w is not None and atom in w and w[atom] != old]
 
     def build_goal(self):
         try:
@@ -584,13 +624,16 @@ def build(layout, actions, search, goal, reach, n_values, initial, time_limit: f
     all_ops = list(b.ops)
     built = len(all_ops)
     init_facts = reader.facts(initial)
-    last = last_step_operators(all_ops, goal_facts, b.atom_of, b.or_minterms(), b.new_fact) if goal_facts else None
+    last = (last_step_operators(all_ops, goal_facts, b.atom_of, b.or_minterms(), b.new_fact, b.fired_steps.get)
+            if goal_facts else None)
     ops = _prune(all_ops, init_facts, goal_facts, b.n_facts)
     labels = [b.labels.get(f, f"#{f}") for f in range(b.n_facts)]
     task = RelaxedTask(b.n_facts, [o[0] for o in ops], [o[1] for o in ops], [o[2] for o in ops],
                        [o[3] for o in ops], goal_facts, labels, reader)
     if last is not None:
-        guide_ops = _prune(all_ops + last[0], init_facts, last[1], b.n_facts)
+        steps = b.step_costs
+        guide_ops = _prune([(o[0], o[1], steps.get(o, o[2]), o[3]) for o in all_ops] + last[0],
+                           init_facts, last[1], b.n_facts)
         task.guide = RelaxedTask(b.n_facts, [o[0] for o in guide_ops], [o[1] for o in guide_ops],
                                  [o[2] for o in guide_ops], [o[3] for o in guide_ops], last[1], labels, reader)
     task.stats = {"facts": b.n_facts, "operators_built": built, "operators": len(ops),

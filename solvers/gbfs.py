@@ -3,7 +3,9 @@
 With a heuristic that names *preferred actions* (`hff`: the first steps of its relaxed
 plan), successors reached by them also go to a second open list, and the search
 alternates between the two, giving the preferred list BOOST extra turns each time h
-improves (Fast Downward's dual queue with boosting). Preferred actions only change the
+improves (Fast Downward's dual queue with boosting; its 1,000 turns sent the search down
+long plateaus of preferred states on the manipulation dungeons: 6,615 expansions at 8
+stones against 917 with 10, and the same on the reference dungeons). Preferred actions only change the
 order of expansion, never which states can be reached, so completeness is kept.
 
 Evaluation is *lazy* (deferred, as in Fast Downward's lazy search) for the heuristics of
@@ -22,7 +24,7 @@ from .base import Budget, Meter, Result, budget_result, extract_plan
 from .heuristics import HEURISTICS
 from .options import Option, declare, heuristic_option
 
-BOOST = 1000
+BOOST = 10
 
 
 class _OpenLists:

@@ -115,7 +115,11 @@ class Relaxed:
 
     def hadd(self, state) -> float:
         if self.guide is not None:
-            return self.guide.hadd(state)
+            h = self.guide.hadd(state)
+            if h != INF:
+                return h
+            # The guiding view reads fired effects as changing (relaxed_last.py): it may
+            # miss a last action the plain view has, never declare a dead end for it.
         if self.holds is not None and self.holds(state):
             return 0
         cost, _, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
@@ -127,7 +131,8 @@ class Relaxed:
         if self.guide is not None:
             h = self.guide.hff(state)
             self.preferred = self.guide.preferred
-            return h
+            if h != INF:
+                return h
         if self.holds is not None and self.holds(state):
             self.preferred = frozenset()
             return 0

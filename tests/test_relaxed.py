@@ -196,6 +196,31 @@ def test_last_step_view_sees_the_carry(tmp_path):
     assert r.hff(model.initial) > r.lmcut(model.initial)
 
 
+def test_guiding_view_counts_each_thing_put_down(tmp_path):
+    """A count that an action moves by one (stones in hand) walks through its values in
+    the relaxed view by fired steps; in the guiding view each step costs the action, and
+    the last placing needs a hand holding one stone (the slot empties only then). With two
+    stones in hand hff therefore counts both placings: along BFS's plan (every suffix of an
+    optimal plan is optimal, so the steps left are the exact cost to go) it is exact from
+    the doorway on, and never more than one short once both stones are held. The plain
+    view saw one placing, and LM-cut, admissible, stays below the exact cost."""
+    text = TINY_ROOMS.replace("r.M.b..b", "rMM.b..b")
+    model = compile_dungeon(_write(tmp_path, "two", text))
+    r = relaxed_of(model)
+    plan = get_solver("bfs")(model, BUDGET).plan
+    assert plan.count("place_block") == 2
+    state, mined = model.initial, 0
+    for i, name in enumerate(plan):
+        state = model.apply(model.action_index(name), state)
+        mined += name == "destroy_block"
+        left = len(plan) - i - 1
+        assert r.lmcut(state) <= left
+        if mined == 2 and "place_block" not in plan[:i + 1]:
+            assert left - 1 <= r.hff(state) <= left, (name, r.hff(state), left)
+        if i >= plan.index("change_item"):
+            assert r.hff(state) == left, (name, r.hff(state), left)
+
+
 def test_relaxed_view_facts_and_goal():
     """The grid's goal is the agent on the gold at (1, 1): one fact of the merged (x, z) group."""
     model = compile_dungeon("grid")
