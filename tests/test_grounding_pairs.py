@@ -159,14 +159,63 @@ def test_ensemble_votes_and_round_trips(tmp_path):
     ex = [("push the chair into the green room", tasks, {tasks[0]: 1.0}),
           ("push the chair into the blue room", tasks, {tasks[1]: 1.0})] * 3
     model = Ensemble.train(ex)
-    assert [m.skips for m in model.members] == [0, 4]
+    from bcc.grounding.bayes import NaiveBayes
+    assert [getattr(m, "skips", None) for m in model.members] == [0, 4, None]
+    assert isinstance(model.members[2], NaiveBayes) and list(model.weights) == [1.0, 1.0, 0.2]
     alone = [m.log_posterior("chair into green", tasks) for m in model.members]
     both = model.log_posterior("chair into green", tasks)
-    # the mean of the members' log-probabilities, renormalised: between the two members
-    assert both[0] > both[1] and min(a[0] for a in alone) - 1e-9 <= both[0] <= max(a[0] for a in alone) + 1e-9
+    # the weighted mean of the members' log-probabilities, renormalised (two tasks: the
+    # first task's log-odds is the weighted mean of the members' log-odds)
+    odds = [a[0] - a[1] for a in alone]
+    assert both[0] > both[1]
+    assert abs((both[0] - both[1]) - (odds[0] + odds[1] + 0.2 * odds[2]) / 2.2) < 1e-9
     model.save(tmp_path / "e.json")
     again = models.load(tmp_path / "e.json")
     assert isinstance(again, Ensemble) and abs(again.log_posterior("chair into green", tasks)[0] - both[0]) < 1e-3
     (tmp_path / "bad.json").write_text('{"format": "bcc-ensemble/1", "members": [{"format": "x"}]}')
     with pytest.raises(BccError, match="members"):
         models.load(tmp_path / "bad.json")
+    data = json.loads((tmp_path / "e.json").read_text())
+    (tmp_path / "w.json").write_text(json.dumps(data | {"weights": [1, -1, 0]}))
+    with pytest.raises(BccError, match="weights"):
+        models.load(tmp_path / "w.json")
+    # a file from before the weights (and naive Bayes): equal votes of its members
+    old = data | {"members": data["members"][:2]}
+    del old["weights"]
+    (tmp_path / "old.json").write_text(json.dumps(old))
+    assert list(models.load(tmp_path / "old.json").weights) == [1.0, 1.0]
+
+
+def test_naive_bayes_counts_and_unseen_tasks(tmp_path):
+    import math
+    from bcc.grounding.bayes import ALPHA, PRIOR, NaiveBayes
+    from bcc.grounding.loglinear import command_features
+    tasks = ["agentInRoom(agent, red)", "agentInRoom(agent, green)", "agentInRoom(agent, orange)"]
+    ex = [("go to red", tasks, {tasks[0]: 1.0})] * 3 + [("go to green", tasks, {tasks[1]: 1.0})]
+    model = NaiveBayes.train(ex)
+    lp = model.log_posterior("go to red", tasks)
+    assert lp[0] > lp[1] and abs(sum(math.exp(x) for x in lp) - 1) < 1e-9
+    # by hand: 4 features name the colour ("w:red", "b:to_red", "h2:red", "e:red"), present
+    # in all 3 red commands and absent from the green one, and the green ones the other
+    # way round; 7 are shared (w:, h1:, e: of "go" and "to", and "b:go_to"), present in
+    # every command of both tasks
+    feats = command_features(["go", "to", "red"])
+    assert len([f for f in feats if "red" in f]) == 4 and len(feats) == 1 + 4 + 7    # and the bias
+    p_red_red, p_red_green = (3 + ALPHA) / (3 + 2 * ALPHA), ALPHA / (1 + 2 * ALPHA)
+    p_green_red, p_green_green = ALPHA / (3 + 2 * ALPHA), (1 + ALPHA) / (1 + 2 * ALPHA)
+    expected = (math.log(3 + PRIOR) - math.log(1 + PRIOR)
+                + 4 * (math.log(p_red_red) - math.log(p_red_green))            # red features present
+                + 4 * (math.log(1 - p_green_red) - math.log(1 - p_green_green))  # green ones absent
+                + 7 * (math.log(p_red_red) - math.log(p_green_green)))           # shared: 3 of 3 against 1 of 1
+    assert abs((lp[0] - lp[1]) - expected) < 1e-9
+    # a task never seen in training is scored as the pooled language, with the smallest prior
+    assert lp[2] < lp[0] and math.isfinite(lp[2])
+    # demonstrations: fractional counts
+    soft = NaiveBayes.train([("go to red", tasks, {tasks[0]: 3.0, tasks[1]: 1.0})] * 2)
+    assert soft.task_counts == {tasks[0]: 1.5, tasks[1]: 0.5}
+    model.save(tmp_path / "nb.json")
+    again = NaiveBayes.load(tmp_path / "nb.json")
+    assert again.log_posterior("go to red", tasks) == pytest.approx(lp)
+    (tmp_path / "bad.json").write_text(json.dumps(model.to_json() | {"feature_counts": {tasks[0]: {"99": 1}}}))
+    with pytest.raises(BccError, match="malformed"):
+        NaiveBayes.load(tmp_path / "bad.json")
