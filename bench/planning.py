@@ -14,7 +14,10 @@ DIR/pddl-instances/...); a problem whose files are missing is reported and skipp
 Every run is a whole process, timed from start to exit (import, parse, ground, search):
 bcc `import pddl` with each bcc configuration, and Fast Downward's driver (translator and
 search) with astar(blind()), astar(lmcut()) and lazy_greedy([ff()]) in the same run, each
-with the same time limit. Per problem: solved, cost, expansions, seconds. bcc's plans are
+with the same time limit. The limit counts CPU seconds for both, as Fast Downward's
+`--overall-time-limit` does (RLIMIT_CPU): on a machine shared with other work, a
+wall-clock limit for bcc beside a CPU limit for Fast Downward would compare unequal
+budgets. Both are also killed after WALL_FACTOR times the limit of wall-clock time. Per problem: solved, cost, expansions, seconds. bcc's plans are
 checked by an independent validator (pddl-pyvalidator, when installed) and their costs
 against Fast Downward's optimal configurations. Prints coverage and ratio tables, writes
 bench/planning.json and, with matplotlib, bench/planning.png.
@@ -31,6 +34,7 @@ import json
 import os
 import platform
 import re
+import signal
 import statistics
 import subprocess
 import sys
@@ -46,6 +50,7 @@ BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-blind": ["--solver", "as
 OPTIMAL = {"bcc-astar", "bcc-blind", "fd-blind", "fd-lmcut"}
 DUNGEON_GOAL = "every stone in the blue room"
 VALIDATE_SECONDS = 120
+WALL_FACTOR = 3      # the wall-clock cap of a run, in time limits (the budget itself is CPU time)
 
 
 def read_manifest(path: Path) -> list[dict]:
@@ -75,7 +80,17 @@ def child_env() -> dict:
 CPU: dict = {}   # the CPU seconds (user + system, children included) of the last timed() run
 
 
-def timed(cmd: list, limit: float, cwd: str | None = None) -> tuple[subprocess.CompletedProcess | None, float]:
+def cpu_limit(seconds: float):
+    """A `preexec_fn` giving the child `seconds` of CPU time, as Fast Downward's driver
+    limits its components (soft limit: SIGXCPU, one second later SIGKILL)."""
+    def apply():
+        import resource
+        resource.setrlimit(resource.RLIMIT_CPU, (int(seconds), int(seconds) + 1))
+    return apply
+
+
+def timed(cmd: list, limit: float, cwd: str | None = None,
+          preexec=None) -> tuple[subprocess.CompletedProcess | None, float]:
     """Run `cmd` as a whole process; (completed process or None if killed, wall seconds).
     Its CPU seconds (the process and its children: Fast Downward's translator and search)
     are left in CPU["last"]: on a loaded machine they vary less than wall time."""
@@ -83,7 +98,8 @@ def timed(cmd: list, limit: float, cwd: str | None = None) -> tuple[subprocess.C
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 15, cwd=cwd, env=child_env())
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=WALL_FACTOR * limit + 15, cwd=cwd,
+                              env=child_env(), preexec_fn=preexec)
     except subprocess.TimeoutExpired:
         proc = None
     wall = time.perf_counter() - start
@@ -93,12 +109,15 @@ def timed(cmd: list, limit: float, cwd: str | None = None) -> tuple[subprocess.C
 
 
 def run_bcc(config: str, domain: str, problem: str, limit: float, plan_file: str) -> dict:
-    cmd = [sys.executable, "-m", "bcc", "import", "pddl", domain, problem, "--json", "--time-limit", str(limit),
-           "-o", plan_file, *BCC_CONFIGS[config]]
-    proc, seconds = timed(cmd, limit)
+    # bcc's own --time-limit (wall clock) is the cap; the budget is the CPU limit
+    cmd = [sys.executable, "-m", "bcc", "import", "pddl", domain, problem, "--json", "--time-limit",
+           str(WALL_FACTOR * limit), "-o", plan_file, *BCC_CONFIGS[config]]
+    proc, seconds = timed(cmd, limit, preexec=cpu_limit(limit))
     row = {"config": config, "seconds": round(seconds, 3), "cpu_seconds": CPU["last"], "solved": False}
     if proc is None:
         return {**row, "status": "killed"}
+    if proc.returncode in (-signal.SIGXCPU, -signal.SIGKILL) and not proc.stdout.strip():
+        return {**row, "status": "budget", "message": "CPU time limit"}
     try:
         data = json.loads(proc.stdout)
     except ValueError:
@@ -323,7 +342,7 @@ def save(args, configs, problems, dungeons) -> dict:
     for entry in problems:
         check_costs(entry)
     report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
-              "time_limit": args.time_limit, "configs": configs}
+              "time_limit": args.time_limit, "time_limit_clock": "cpu", "configs": configs}
     if problems:
         report["ipc"] = {"summary": summarize(problems, configs), "problems": problems}
     if dungeons:

@@ -200,18 +200,23 @@ def brute_force(task):
 @settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(tasks())
 def test_random_strips_tasks_have_the_brute_force_optimum(tmp_path, task):
-    domain, problem = write_task(tmp_path, task)
-    model = import_pddl(domain, problem)
-    result = get_solver("astar")(model, Budget(time_limit=60))
-    expected = brute_force(task)
-    if expected is None:
-        assert not result.solved and result.status == "no_solution"
-    else:
-        assert result.solved and result.cost == expected
-        s = model.initial
-        for step in result.plan:
-            s = model.apply(model.action_index(step), s)
-        assert model.is_goal(s)
+    # as drawn (costs 0-3), and with every cost 1: blind A* tests goals at generation then
+    for costs in ("drawn", "unit"):
+        if costs == "unit":
+            task = ([(*a[:4], 1) for a in task[0]], *task[1:])
+        domain, problem = write_task(tmp_path, task)
+        model = import_pddl(domain, problem)
+        expected = brute_force(task)
+        for heuristic in ("auto", "blind"):
+            result = get_solver("astar")(model, Budget(time_limit=60), heuristic=heuristic)
+            if expected is None:
+                assert not result.solved and result.status == "no_solution"
+            else:
+                assert result.solved and result.cost == expected, (costs, heuristic)
+                s = model.initial
+                for step in result.plan:
+                    s = model.apply(model.action_index(step), s)
+                assert model.is_goal(s)
 
 
 @pytest.mark.slow
