@@ -1,28 +1,22 @@
 """Compile a ground PDDL task (ground.py) into bcc's IR, then into a `Model`.
 
-Why the IR: an imported problem then is a model like any compiled dungeon: a state is
-`bytes` with one byte per atom (a boolean state variable), preconditions and goal are
-IR conditions (`Var`, `Not`, `BoolOp`), effects are `SetVar` (under `When` for
-conditional effects), and compiler/emit.py turns them into Python. PDDL semantics:
-conditions read the state before the action, deletes apply before adds.
-
-Successors use a decision tree instead of testing every action in turn (Fast Downward's
-successor generator): actions are grouped under a test of a positive precondition atom
-they share, so a state only looks at actions whose first atoms hold. The generated code
-holds only indices and numbers: no text from the PDDL files reaches it.
+Why the IR: an imported problem then is a model like any compiled dungeon: one boolean
+state variable per atom, preconditions and goal are IR conditions (`Var`, `Not`,
+`BoolOp`), effects are `SetVar` (under `When` for conditional effects). bits.py turns
+them into Python over int states (bit i is atom i), which is faster than compiler/emit.py's
+byte-per-variable states for tasks made only of booleans. PDDL semantics: conditions read
+the state before the action, deletes apply before adds. The generated code holds only
+numbers: no text from the PDDL files reaches it.
 """
 from __future__ import annotations
 
 import functools
-from collections import Counter
 
 from ..compiler import ir
-from ..compiler.emit import Emitter, GroundAction
+from ..compiler.emit import GroundAction
 from ..compiler.layout import Layout, Slot
+from .bits import BitEmitter
 from .ground import GroundTask
-
-MAX_DEPTH = 40   # nesting of the decision tree (Python's parser limits indentation depth)
-
 
 def formula_ir(f, var_of):
     if isinstance(f, int):
@@ -77,67 +71,28 @@ def to_ir(task: GroundTask):
     return layout, var_of, actions, formula_ir(task.goal, var_of)
 
 
-def successors_source(em: Emitter, actions: list, layout) -> str:
-    """`successors(s)` as a decision tree (a trie) over positive precondition atoms.
-
-    Each action's positive atoms, most frequent first, are its path in the trie; an
-    action sits at the end of its path (or at MAX_DEPTH), where only its other
-    conditions remain to test. Building it is linear in the size of the actions."""
-    index_of = {s.var: s.index for s in layout.slots}
-    keys = [[index_of[c.var] for c in a.pre if isinstance(c, ir.Var)] for a in actions]
-    freq = Counter(i for k in keys for i in k)
-    root: dict = {}
-    for i, k in enumerate(keys):
-        node = root
-        for atom in sorted(set(k), key=lambda t: (-freq[t], t))[:MAX_DEPTH]:
-            node = node.setdefault(atom, {})
-        node.setdefault(None, []).append(i)
-    lines = ["def successors(s):", "    out = []"]
-
-    def leaf(i, used, indent):
-        a = actions[i]
-        rest = [em.ex(c) for c in a.pre if not (isinstance(c, ir.Var) and index_of[c.var] in used)]
-        if rest:
-            lines.append(f"{indent}if {' and '.join(rest)}:")
-            indent += "    "
-        lines.append(f"{indent}n = bytearray(s)")
-        lines.extend(em.effects(a.effects, indent, a.name) or [])
-        lines.append(f"{indent}out.append(({i}, bytes(n)))")
-
-    def emit(node, used, indent):
-        for i in node.get(None, ()):
-            leaf(i, used, indent)
-        for atom, child in node.items():
-            if atom is not None:
-                lines.append(f"{indent}if s[{atom}]:")
-                emit(child, used | {atom}, indent + "    ")
-
-    emit(root, frozenset(), "    ")
-    lines.append("    return out")
-    return "\n".join(lines)
-
-
 def build_functions(layout, actions: list, goal) -> tuple[dict, str]:
-    """Generated `successors`, `goal` and `failure` (and their source). One action at a
-    time (`apply_fns`, `why_fns`: replaying and explaining plans) reads the ground task
-    instead (`action_functions`): compiling a function per action would cost more than
-    the search on most IPC problems."""
-    from ..errors import ModelError
-    em = Emitter(layout, {})
-    parts = [successors_source(em, actions, layout)]
-    parts.append(em.predicate_source("goal", goal))
-    parts.append(em.predicate_source("failure", ir.FALSE))
-    source = "\n\n".join(parts) + "\n"
-    ns = dict(em.ns)
-    ns.setdefault("ModelError", ModelError)
+    """Generated `successors` and `goal` over int states (bits.py), and their source.
+    One action at a time (`apply_fns`, `why_fns`: replaying and explaining plans) reads
+    the ground task instead (`action_functions`): compiling a function per action would
+    cost more than the search on most IPC problems."""
+    em = BitEmitter({s.var: s.index for s in layout.slots})
+    source = "\n\n".join([em.successors_source(actions), em.predicate_source("goal", goal)]) + "\n"
+    ns: dict = {}
     exec(compile(source, "<bcc pddl model>", "exec"), ns)
+    ns["failure"] = _never
     return ns, source
 
 
+def _never(s) -> bool:
+    """An imported task has no failure states."""
+    return False
+
+
 def holds(f, s) -> bool:
-    """A ground formula (ground.py) in state `s`."""
+    """A ground formula (ground.py) in state `s` (an int: bit i is atom i)."""
     if isinstance(f, int):
-        return s[f] == 1
+        return s >> f & 1 == 1
     kind = f[0]
     if kind == "not":
         return not holds(f[1], s)
@@ -156,14 +111,13 @@ def action_functions(a) -> tuple:
         if not all(holds(c, s) for c in conj):
             return None
         fire = [(atom, add) for cond, atom, add in a.effects if cond == ("true",) or holds(cond, s)]
-        n = bytearray(s)
-        for atom, add in fire:
-            if not add:
-                n[atom] = 0
+        dels = adds = 0
         for atom, add in fire:
             if add:
-                n[atom] = 1
-        return bytes(n)
+                adds |= 1 << atom
+            else:
+                dels |= 1 << atom
+        return s & ~dels | adds
 
     def why(s):
         return next((k for k, c in enumerate(conj) if not holds(c, s)), None)
@@ -177,7 +131,7 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
     ns, source = build_functions(layout, actions, goal)
     fns = [action_functions(a) for a in task.actions]
     n = len(var_of)
-    initial = bytes(1 if i in task.initial else 0 for i in range(n))
+    initial = sum(1 << i for i in task.initial)   # an int: bit i is atom i (bits.py)
     return Model(
         name=task.name, path=path, goal_text=formula_text(task.goal, task),
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),

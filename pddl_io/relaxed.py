@@ -14,13 +14,18 @@ from .ground import GroundTask
 
 
 class AtomReader:
-    """A state (one byte per atom) -> the facts that hold in it."""
+    """A state (an int, bit i is atom i: compile.py) -> the facts that hold in it.
+    `to_dense` (set by relaxed_of for compiled dungeons' compact layouts) is not needed:
+    an imported state has one layout."""
     to_dense = None
 
     def facts(self, state) -> list:
-        if self.to_dense is not None:
-            state = self.to_dense(state)
-        return [i for i, v in enumerate(state) if v]
+        out = []
+        while state:
+            low = state & -state
+            out.append(low.bit_length() - 1)
+            state ^= low
+        return out
 
 
 def _positives(f) -> list:
