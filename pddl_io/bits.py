@@ -19,7 +19,9 @@ from collections import Counter
 
 from ..compiler import ir
 
-MAX_DEPTH = 40   # nesting of the decision tree (Python's parser limits indentation depth)
+MAX_DEPTH = 40     # atoms on a path of the decision tree
+MAX_NESTING = 80   # Python's parser allows 100 levels of indentation: groups stop at 80
+FAN = 4            # a wide node's children are tested in this many groups, recursively
 
 
 def _flatten(node) -> list:
@@ -91,7 +93,10 @@ class BitEmitter:
                 dels |= 1 << self.bit_of[e.var]
         return dels, adds, conditional
 
-    def successors_source(self, actions: list) -> str:
+    def successors_source(self, actions: list, fresh: bool = False) -> str:
+        """`successors(s)`: [(action, next state)]; or with `fresh`, `fresh(s, seen, out)`
+        (Model.search_fresh): each next state not yet a key of `seen` is stored there with
+        `s` and appended to `out`; it returns how many next states there were."""
         keys = [[self.bit_of[c.var] for c in a.pre if isinstance(c, ir.Var)] for a in actions]
         freq = Counter(i for k in keys for i in k)
         root: dict = {}
@@ -100,7 +105,17 @@ class BitEmitter:
             for atom in sorted(set(k), key=lambda t: (-freq[t], t))[:MAX_DEPTH]:
                 node = node.setdefault(atom, {})
             node.setdefault(None, []).append(i)
-        lines = ["def successors(s):", "    out = []", "    add = out.append"]
+        if fresh:
+            lines = ["def fresh(s, seen, out):", "    add = out.append", "    k = 0"]
+        else:
+            lines = ["def successors(s):", "    out = []", "    add = out.append"]
+
+        def put(i, nxt, indent):
+            if not fresh:
+                lines.append(f"{indent}add(({i}, {nxt}))")
+                return
+            lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}if t not in seen:",
+                          f"{indent}    seen[t] = s", f"{indent}    add(t)"])
 
         def leaf(i, used, indent):
             a = actions[i]
@@ -111,7 +126,7 @@ class BitEmitter:
             dels, adds, conditional = self.effects(a.effects)
             if not conditional:
                 nxt = "s" + (f" & {~dels:#x}" if dels else "") + (f" | {adds:#x}" if adds else "")
-                lines.append(f"{indent}add(({i}, {nxt}))")
+                put(i, nxt, indent)
                 return
             lines.append(f"{indent}d = {dels:#x}")
             lines.append(f"{indent}a = {adds:#x}")
@@ -119,18 +134,48 @@ class BitEmitter:
                 lines.append(f"{indent}if {cond}:")
                 lines.append(f"{indent}    d |= {d:#x}")
                 lines.append(f"{indent}    a |= {ad:#x}")
-            lines.append(f"{indent}add(({i}, s & ~d | a))")
+            put(i, "s & ~d | a", indent)
+
+        def single(node):
+            """The one action in `node`'s subtree, or None if it holds more."""
+            found = None
+            for atom, child in node.items():
+                for i in (child if atom is None else [single(child)]):
+                    if i is None or found is not None:
+                        return None
+                    found = i
+            return found
 
         def emit(node, used, indent):
             for i in node.get(None, ()):
                 leaf(i, used, indent)
-            for atom, child in node.items():
-                if atom is not None:
+            children = sorted((atom, child) for atom, child in node.items() if atom is not None)
+            split(children, used, indent)
+
+        def split(children, used, indent):
+            """Many children: test groups of them with one mask first (recursively, FAN
+            groups a level), so a state skips every group none of whose atoms holds: a
+            wide node, e.g. one child per location of a truck, has few true atoms."""
+            if len(children) <= FAN or len(indent) >= 4 * MAX_NESTING:
+                for atom, child in children:
+                    only = single(child)
+                    if only is not None:      # one action below: all its atoms in one mask test
+                        leaf(only, used, indent)
+                        continue
                     lines.append(f"{indent}if s & {1 << atom:#x}:")
                     emit(child, used | {atom}, indent + "    ")
+                return
+            size = -(-len(children) // FAN)
+            for k in range(0, len(children), size):
+                group = children[k:k + size]
+                if len(group) == 1:
+                    split(group, used, indent)
+                    continue
+                lines.append(f"{indent}if s & {sum(1 << atom for atom, _ in group):#x}:")
+                split(group, used, indent + "    ")
 
         emit(root, frozenset(), "    ")
-        lines.append("    return out")
+        lines.append("    return k" if fresh else "    return out")
         return "\n".join(lines)
 
     def predicate_source(self, name: str, node) -> str:

@@ -82,6 +82,8 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
     options = solver_request(solver, solver_options)   # the options bcc solve takes, checked the same way
     if options.get("heuristic") in (None, "auto") and solver in ("gbfs", "wastar"):
         options["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
+    elif solver == "astar" and options.get("heuristic") in (None, "auto") and options.get("weight", 1) == 1:
+        from .portfolio import solve   # LM-cut for a slice of the time, then blind (both optimal)
     deadline = Deadline(budget)
     model = None
     try:

@@ -72,12 +72,13 @@ def to_ir(task: GroundTask):
 
 
 def build_functions(layout, actions: list, goal) -> tuple[dict, str]:
-    """Generated `successors` and `goal` over int states (bits.py), and their source.
+    """Generated `successors`, `fresh` (Model.search_fresh) and `goal` over int states (bits.py), and their source.
     One action at a time (`apply_fns`, `why_fns`: replaying and explaining plans) reads
     the ground task instead (`action_functions`): compiling a function per action would
     cost more than the search on most IPC problems."""
     em = BitEmitter({s.var: s.index for s in layout.slots})
-    source = "\n\n".join([em.successors_source(actions), em.predicate_source("goal", goal)]) + "\n"
+    source = "\n\n".join([em.successors_source(actions), em.successors_source(actions, fresh=True),
+                          em.predicate_source("goal", goal)]) + "\n"
     ns: dict = {}
     exec(compile(source, "<bcc pddl model>", "exec"), ns)
     ns["failure"] = _never
@@ -136,6 +137,7 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
         name=task.name, path=path, goal_text=formula_text(task.goal, task),
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["successors"],  # no failure states
+        fresh_successors=ns["fresh"],
         apply_fns=tuple(f[0] for f in fns), why_fns=tuple(f[1] for f in fns),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"],

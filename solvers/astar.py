@@ -14,10 +14,6 @@ few distinct keys. A state's g is read back from its key, so entries are bare st
 Blind search with equal action costs expands the same states in the same order with no
 keys at all (`_layered`): layer by layer, over `Model.search_fresh`.
 
-With the blind heuristic and equal action costs the goal test runs when a state is
-generated (as in BFS): states leave the open list in order of g, so the first goal
-generated is a cheapest one.
-
 Heuristic `auto` (the default) starts with the cheap `manhattan` and, if the search is
 still running after SWITCH_AFTER expansions, builds the pattern database and re-sorts the
 open list by it. Both are consistent, so optimality is kept: every closed state already
@@ -65,9 +61,6 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     nodes = {start: (0, None, None)}
     costs = model.action_costs
     packed = weight == 1 and all(type(c) is int for c in costs)
-    # Blind with equal costs pops states layer by layer (by g), so the first goal generated
-    # is a cheapest one: testing at generation saves expanding the rest of the last layer.
-    early = zero and len(set(costs)) <= 1
     successors, is_goal = model.search_successors(), model.is_goal
 
     def result(**kw) -> Result:
@@ -128,10 +121,6 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
                     if packed:
                         hn = ceil(hn)
             nodes[nxt] = (g2, state, action)
-            if early and is_goal(nxt):
-                plan, cost = _plan(model, nodes, nxt)
-                return result(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded,
-                              generated=generated)
             key = ((g2 + hn) << SHIFT) | hn if packed else (g2 + weight * hn, hn, g2)
             entries = bins.get(key)
             if entries is None:

@@ -127,6 +127,9 @@ def test_generated_successors_agree_with_the_ground_task_interpreter(problem):
         s = todo.pop()
         expected = [(a, n) for a in range(len(model.action_names)) if (n := model.apply_fns[a](s)) is not None]
         assert sorted(model.successors(s)) == sorted(expected)
+        seen, out = {s: None}, []       # the fused duplicate check (Model.search_fresh)
+        assert model.search_fresh()(s, seen, out) == len(expected)
+        assert sorted(out) == sorted({n for _, n in expected} - {s}) and all(seen[n] == s for n in out)
         for _, n in expected:
             if n not in seen:
                 seen.add(n)
@@ -296,3 +299,24 @@ def test_a_conditional_add_that_restores_a_deleted_precondition_is_kept(tmp_path
     model = import_pddl(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl"))
     result = get_solver("bfs")(model, Budget())
     assert result.solved and result.cost == 2 and result.plan == ["(toggle)", "(light)"]
+
+
+@pytest.mark.parametrize("problem", sorted(HAND_COSTS))
+def test_the_auto_portfolio_keeps_hand_derived_costs_when_lmcut_runs_out(problem, monkeypatch):
+    # `bcc import pddl` with A* auto: LM-cut for a slice, then blind. With no time for
+    # LM-cut, blind search must finish with the same (hand-derived) optimum.
+    from bcc.pddl_io import portfolio
+    monkeypatch.setattr(portfolio, "LMCUT_SECONDS", 1e-9)
+    model = load(problem)
+    result = portfolio.solve(model, Budget(time_limit=60))
+    assert result.solved and result.cost == HAND_COSTS[problem][1]
+    end, cost = replay(model, result.plan)
+    assert model.is_goal(end) and cost == result.cost
+    monkeypatch.setattr(portfolio, "LMCUT_SECONDS", 60.0)
+    assert portfolio.solve(model, Budget(time_limit=60)).heuristic == "lmcut"
+
+
+def test_cli_import_uses_the_portfolio_for_astar_auto():
+    r = CliRunner().invoke(main, ["import", "pddl", str(HERE / "gripper-domain.pddl"), str(HERE / "gripper-3.pddl"),
+                                  "--json"])
+    assert r.exit_code == 0 and json.loads(r.stdout)["heuristic"] in ("lmcut", "auto (lmcut, then blind)")
