@@ -136,7 +136,10 @@ def _layered(model: Model, meter: Meter, name: str) -> Result:
     """Blind A* when every action costs the same: f = g orders states by depth, so the
     open list is the layer being expanded (last in, first out, as the buckets would) and
     the next one. A state's first path is then a cheapest one, so the loop keeps only
-    parents and drops every state seen before inside `Model.search_fresh`."""
+    parents and drops every state seen before inside `Model.search_fresh`. New states are
+    goal-tested as they are generated: a goal one layer down is a cheapest one, and the
+    rest of the layer need not be expanded (as Fast Downward's blind heuristic, 0 only
+    on goals, pops a generated goal next; mystery p02 has millions of states a layer)."""
     start, budget = model.initial, meter.budget
     parents = {start: None}
     fresh, is_goal = model.search_fresh(), model.is_goal
@@ -161,7 +164,14 @@ def _layered(model: Model, meter: Meter, name: str) -> Result:
                     r = budget_result(name, which, meter, expanded, generated, len(parents))
                     r.heuristic, r.initial_h = "blind", 0
                     return r
+            known = len(below)
             generated += fresh(state, parents, below)
+            if len(below) > known and any(map(is_goal, below[known:])):
+                goal = next(t for t in below[known:] if is_goal(t))
+                plan, cost = parent_plan(model, parents, goal)
+                return meter.finish(Result(solver=name, solved=True, status="solved", plan=plan, cost=cost,
+                                           expanded=expanded, generated=generated, stored=len(parents),
+                                           heuristic="blind", initial_h=0))
         layer = below
     return meter.finish(Result(solver=name, solved=False, status="no_solution", expanded=expanded,
                                generated=generated, stored=len(parents), heuristic="blind", initial_h=0,
