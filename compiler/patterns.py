@@ -84,6 +84,8 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
     # for 4 facings, not for every (x, z, facing).
     read_at = {i: [k for k, v in enumerate(pattern) if v in _action_reads(actions[i], an)] for i in movers}
     outcomes: dict = {}
+    goal_reads = [k for k, v in enumerate(pattern) if v in reads(goal, an, {}, set())]   # likewise the goal
+    goal_at: dict = {}
 
     def flat(values) -> int:
         i = 0
@@ -106,7 +108,10 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
         sets = dict(base)
         sets.update({var: frozenset({v}) for var, v in zip(pattern, values)})
         here = flat(values)
-        if maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal)):
+        key = tuple(values[k] for k in goal_reads)
+        if key not in goal_at:
+            goal_at[key] = maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal))
+        if goal_at[key]:
             goals.append(here)
         for i in movers:
             a = actions[i]
