@@ -4,6 +4,7 @@
     python bench/corpus.py                                  # ../shared/corpora/cleanup-amt/commands.jsonl
     python bench/corpus.py --pairs FILE --folds 10 --seed 0
     python bench/corpus.py --quick                          # 3 folds, pooled levels only
+    python bench/corpus.py --pooled-only                    # 10 folds, without the per-level models
 
 The corpus is read from where it lies (never copied into the repository). For each mode
 (`--from tasks`, `--from demonstrations`) a fresh model is trained per fold on the other
@@ -31,14 +32,14 @@ MODEL = ("two log-linear models (words and adjacent pairs; also pairs up to four
          "voting 1 : 1 : 0.2")
 
 
-def _mode(rows, levels, mode, folds, seed, quick) -> dict:
+def _mode(rows, levels, mode, folds, seed, pooled_only) -> dict:
     """Accuracy in one mode: pooled levels (10-fold), then each level on its own."""
     from bcc.grounding import pairs
     t0 = time.perf_counter()
     pooled = pairs.evaluate(pairs.folds(rows, folds, seed), mode)
     entry = {"pooled": {lv: 100 * v["accuracy"] for lv, v in pooled["by_level"].items()},
              "overall": 100 * pooled["accuracy"], "train_seconds": pooled["train_seconds"]}
-    if not quick:
+    if not pooled_only:
         entry["per_level"] = {}
         for lv in levels:
             mine = [r for r in rows if r["level"] == lv]
@@ -54,6 +55,8 @@ def main(argv=None) -> int:
     ap.add_argument("--folds", type=int, default=10)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--quick", action="store_true", help="3 folds, pooled levels only")
+    ap.add_argument("--pooled-only", action="store_true",
+                    help="only the models trained on all levels (the targets); skip the per-level ones")
     ap.add_argument("--workers", type=int, default=2, help="processes (one per mode)")
     ap.add_argument("-o", "--output", default=str(HERE / "corpus.json"))
     args = ap.parse_args(argv)
@@ -64,7 +67,8 @@ def main(argv=None) -> int:
     levels = sorted({r["level"] for r in rows})
     # the two modes are independent: one process each (the machine's other core)
     with ProcessPoolExecutor(max_workers=min(args.workers, len(pairs.MODES))) as pool:
-        jobs = {mode: pool.submit(_mode, rows, levels, mode, folds, args.seed, args.quick) for mode in pairs.MODES}
+        jobs = {mode: pool.submit(_mode, rows, levels, mode, folds, args.seed,
+                                   args.quick or args.pooled_only) for mode in pairs.MODES}
         results = {mode: job.result() for mode, job in jobs.items()}
     for mode, entry in results.items():
         print(f"[{mode}] done in {entry['seconds']} s", file=sys.stderr)
