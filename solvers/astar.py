@@ -145,17 +145,15 @@ def _layered(model: Model, meter: Meter, name: str) -> Result:
     fresh, is_goal = model.search_fresh(), model.is_goal
     mask, max_states = meter.mask, budget.max_states
     expanded = generated = 0
+    if is_goal(start):   # every other state is goal-tested when generated
+        return meter.finish(Result(solver=name, solved=True, status="solved", plan=[], cost=0, expanded=0,
+                                   generated=0, stored=1, heuristic="blind", initial_h=0))
     layer: list = [start]
     while layer:
         below: list = []
         pop = layer.pop
         while layer:
             state = pop()
-            if is_goal(state):
-                plan, cost = parent_plan(model, parents, state)
-                return meter.finish(Result(solver=name, solved=True, status="solved", plan=plan, cost=cost,
-                                           expanded=expanded, generated=generated, stored=len(parents),
-                                           heuristic="blind", initial_h=0))
             expanded += 1
             if not expanded & mask or max_states is not None and len(parents) > max_states:
                 which = meter.check(expanded, generated, len(parents))
