@@ -36,6 +36,9 @@ class Relaxed:
         self.free = [i for i, p in enumerate(self.pre) if not p]
         self.goal = task.goal
         self.goal_set = set(task.goal or ())
+        self.is_goal_fact = bytearray(self.n_facts)
+        for g in self.goal_set:
+            self.is_goal_fact[g] = 1
         self.achievers = [[] for _ in range(self.n_facts)]
         for i, add in enumerate(self.add):
             for f in add:
@@ -100,6 +103,52 @@ class Relaxed:
                             push(heap, (v, g))
         return cost, sup, pcf
 
+    def explore_add(self, init, costs):
+        """`explore` for hadd and hff (additive, stopping at the goal), without the
+        branches and the record they do not use: the loop every hff evaluation runs."""
+        cost = [INF] * self.n_facts
+        sup = [-1] * self.n_facts
+        unsat = self.n_pre[:]
+        opv = [0] * self.n_ops
+        heap = []
+        pre_of, add = self.pre_of, self.add
+        for f in init:
+            if cost[f] != 0:
+                cost[f] = 0
+                heap.append((0, f))
+        for i in self.free:
+            c = costs[i]
+            for g in add[i]:
+                if c < cost[g]:
+                    cost[g] = c
+                    sup[g] = i
+                    heap.append((c, g))
+        heapq.heapify(heap)
+        is_goal = self.is_goal_fact
+        goals_left = len(self.goal_set)
+        pop, push = heapq.heappop, heapq.heappush
+        while heap:
+            c, f = pop(heap)
+            if c > cost[f]:
+                continue
+            if is_goal[f]:
+                goals_left -= 1
+                if goals_left == 0:
+                    break
+            for i in pre_of[f]:
+                v = opv[i] + c
+                opv[i] = v
+                u = unsat[i] - 1
+                unsat[i] = u
+                if u == 0:
+                    v += costs[i]
+                    for g in add[i]:
+                        if v < cost[g]:
+                            cost[g] = v
+                            sup[g] = i
+                            push(heap, (v, g))
+        return cost, sup
+
     def goal_cost(self, cost, additive: bool):
         if self.goal is None:
             return INF
@@ -122,7 +171,7 @@ class Relaxed:
             # miss a last action the plain view has, never declare a dead end for it.
         if self.holds is not None and self.holds(state):
             return 0
-        cost, _, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
+        cost, _ = self.explore_add(self.task.state_facts(state), self.cost)
         return self.goal_cost(cost, True)
 
     def hff(self, state) -> float:
@@ -136,7 +185,7 @@ class Relaxed:
         if self.holds is not None and self.holds(state):
             self.preferred = frozenset()
             return 0
-        cost, sup, _ = self.explore(self.task.state_facts(state), self.cost, True, True)
+        cost, sup = self.explore_add(self.task.state_facts(state), self.cost)
         if self.goal is None or any(cost[g] == INF for g in self.goal):
             self.preferred = frozenset()
             return INF
