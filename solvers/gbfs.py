@@ -67,16 +67,31 @@ def preferred_of(h):
     return None
 
 
-@declare(heuristic_option("pdb"),
+def auto_heuristic(model: Model) -> str:
+    """gbfs's own choice: the pattern database where it sees the goal (a goal about the
+    agent's position), hff where it is blind at the start (h = 0 although the goal does
+    not hold: carrying things, or a model without a position) and the model has a relaxed
+    view, else the pattern database (which falls back to manhattan)."""
+    if "relaxed_task" not in model.lazy:
+        return "pdb"
+    if model.data("pattern_database") is None and model.goal_positions is None:
+        return "hff"
+    h0 = HEURISTICS["pdb"](model)(model.initial)
+    return "hff" if h0 == 0 and not model.is_goal(model.initial) else "pdb"
+
+
+@declare(heuristic_option("auto"),
          Option("preferred", bool, True, "with hff: also expand states reached by its preferred actions "
                 "(a second queue, boosted on progress)"),
          Option("evaluation", str, "auto", "when h is computed: eager (on generation), lazy (on expansion, "
                 "successors queued under the parent's h), auto (lazy for the relaxed-view heuristics)",
                 choices=("auto", "eager", "lazy")))
-def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", preferred: bool = True,
+def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", preferred: bool = True,
           evaluation: str = "auto", **options) -> Result:
     meter = Meter(budget, progress)
-    h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
+    if heuristic == "auto":
+        heuristic = auto_heuristic(model)
+    h = HEURISTICS[heuristic](model)
     helpful = preferred_of(h) if preferred else None
     if evaluation == "lazy" or evaluation == "auto" and heuristic in COSTLY:
         return _lazy(model, budget, meter, h, helpful, heuristic)

@@ -221,6 +221,18 @@ def test_guiding_view_counts_each_thing_put_down(tmp_path):
             assert r.hff(state) == left, (name, r.hff(state), left)
 
 
+def test_gbfs_auto_picks_hff_where_the_pattern_database_is_blind(tmp_path):
+    """gbfs's `auto`: on a carrying goal the position pattern database says 0 at the start
+    although the goal does not hold, so hff guides; on a position goal (grid) the pattern
+    database is kept. Both plans replay to the goal."""
+    carry = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
+    assert heuristics.HEURISTICS["pdb"](carry)(carry.initial) == 0
+    for model, expected in ((carry, "hff"), (compile_dungeon("grid"), "pdb")):
+        result = get_solver("gbfs")(model, BUDGET)
+        assert result.solved and result.heuristic == expected
+        assert replay(model, [(p, 1, 1) for p in result.plan]).valid
+
+
 def test_relaxed_view_facts_and_goal():
     """The grid's goal is the agent on the gold at (1, 1): one fact of the merged (x, z) group."""
     model = compile_dungeon("grid")
