@@ -225,6 +225,7 @@ def test_gbfs_auto_picks_hff_where_the_pattern_database_is_blind(tmp_path):
     """gbfs's `auto`: on a carrying goal the position pattern database says 0 at the start
     although the goal does not hold, so hff guides; on a position goal (grid) the pattern
     database is kept. Both plans replay to the goal."""
+    from bcc.solvers import heuristics
     carry = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
     assert heuristics.HEURISTICS["pdb"](carry)(carry.initial) == 0
     for model, expected in ((carry, "hff"), (compile_dungeon("grid"), "pdb")):
