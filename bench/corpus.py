@@ -17,11 +17,17 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import platform
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+
+# One BLAS thread, as the `bcc` command runs (cli.py): this script imports bcc directly,
+# and a thread per core made training 4x slower on a busy machine. Set before numpy loads.
+for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_blas_threads, "1")
 
 HERE = Path(__file__).resolve().parent
 DEFAULT = HERE.parent.parent / "shared" / "corpora" / "cleanup-amt" / "commands.jsonl"
