@@ -27,7 +27,7 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result, parent_plan
-from .heuristics import HEURISTICS
+from .heuristics import HEURISTICS, position_blind
 from .options import Option, declare, heuristic_option
 
 SWITCH_AFTER = 4096
@@ -49,6 +49,10 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
         # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if there is one.
         switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
+    elif switching and position_blind(model):
+        # The goal does not pin the agent's position: manhattan and the pattern database
+        # are 0 everywhere, so they would only slow a blind search down.
+        switching, used = False, "blind"
     h = HEURISTICS[used](model)
     zero = used == "blind"
     if zero and len(set(model.action_costs)) <= 1:

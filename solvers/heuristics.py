@@ -50,6 +50,18 @@ def manhattan(model: Model):
     return lambda s: table[sum(s[i] * st for i, st in idx)]
 
 
+def position_blind(model: Model) -> bool:
+    """Whether `manhattan` (and the pattern database, which abstracts the same goal test
+    to positions) is 0 in every state: the goal may hold at every position the agent can
+    take, as for a goal about carrying things. A* then searches blind, in its fast loop."""
+    goals = model.goal_positions
+    if not goals:
+        return False
+    by_index = {v.index: v for v in model.variables}
+    box = math.prod(by_index[index].hi - lo + 1 for p in model.position if p is not None for index, lo in [p])
+    return len(set(goals)) >= box
+
+
 def _l1_distances(seeds: dict, sizes: list, strides: list) -> list:
     """min over seeds (flat index -> cost) of cost + the L1 distance, for every point of the
     box `sizes`: the separable distance transform, a forward and a backward sweep along

@@ -126,3 +126,36 @@ def test_auto_switch_on_any_expansion_keeps_the_optimum(monkeypatch, name):
         monkeypatch.setattr(astar, "SWITCH_AFTER", switch_after)
         r = astar.solve(model, Budget())
         assert r.cost == optimum, f"switching after {switch_after} expansions"
+
+
+@pytest.mark.parametrize("name", ["pasture", "barnyard", "cleanup"])
+def test_auto_searches_blind_where_the_goal_does_not_pin_the_position(name):
+    """Feeding animals or carrying the chair may end anywhere: the position heuristics are 0
+    on every reachable state (checked here over all of them, or the first 3,000), so `auto`
+    searches blind, in the layered loop, and finds BFS's cost."""
+    from collections import deque
+
+    from bcc.solvers.heuristics import HEURISTICS, position_blind
+    model = compile_dungeon(name)
+    assert position_blind(model)
+    pdb, manhattan = HEURISTICS["pdb"](model), HEURISTICS["manhattan"](model)
+    seen, todo = {model.initial}, deque([model.initial])
+    while todo and len(seen) < 3000:
+        state = todo.popleft()
+        assert pdb(state) == manhattan(state) == 0
+        for _, nxt in model.successors(state):
+            if nxt not in seen:
+                seen.add(nxt)
+                todo.append(nxt)
+    auto = get_solver("astar")(model, Budget(max_states=200_000))
+    bfs = get_solver("bfs")(model, Budget(max_states=200_000))
+    assert auto.heuristic == "blind" and auto.solved and auto.cost == bfs.cost
+    assert replay(model, [(a, 1, 1) for a in auto.plan]).valid
+
+
+def test_auto_keeps_the_position_heuristics_where_the_goal_is_a_place():
+    from bcc.solvers.heuristics import position_blind
+    for name in ("grid", "bridge", "four_rooms", "tough_maze"):
+        model = compile_dungeon(name)
+        assert not position_blind(model)
+        assert get_solver("astar")(model, Budget(max_states=200_000)).heuristic.startswith(("auto", "manhattan"))
