@@ -51,20 +51,17 @@ class Relaxed:
         self.holds = None
 
     # ---- exploration -------------------------------------------------------------------------
-    def explore(self, init, costs, additive: bool, stop_at_goal: bool):
-        """Fact costs (hmax or hadd), the supporter of each fact, and each fired operator's
-        last-reached (for hmax: costliest) precondition."""
+    def _seeded(self, init, costs):
+        """Fact costs, supporters and the heap at the start of an exploration: the state's
+        facts at 0, and what the operators without preconditions add at their cost."""
         cost = [INF] * self.n_facts
         sup = [-1] * self.n_facts
-        unsat = self.n_pre[:]
-        opv = [0] * self.n_ops
-        pcf = [-1] * self.n_ops
         heap = []
-        pre_of, add = self.pre_of, self.add
         for f in init:
             if cost[f] != 0:
                 cost[f] = 0
                 heap.append((0, f))
+        add = self.add
         for i in self.free:
             c = costs[i]
             for g in add[i]:
@@ -73,6 +70,16 @@ class Relaxed:
                     sup[g] = i
                     heap.append((c, g))
         heapq.heapify(heap)
+        return cost, sup, heap
+
+    def explore(self, init, costs, additive: bool, stop_at_goal: bool):
+        """Fact costs (hmax or hadd), the supporter of each fact, and each fired operator's
+        last-reached (for hmax: costliest) precondition."""
+        cost, sup, heap = self._seeded(init, costs)
+        unsat = self.n_pre[:]
+        opv = [0] * self.n_ops
+        pcf = [-1] * self.n_ops
+        pre_of, add = self.pre_of, self.add
         goals_left = len(self.goal_set) if stop_at_goal else -1
         goal_set = self.goal_set
         done = bytearray(self.n_facts)
@@ -106,24 +113,10 @@ class Relaxed:
     def explore_add(self, init, costs):
         """`explore` for hadd and hff (additive, stopping at the goal), without the
         branches and the record they do not use: the loop every hff evaluation runs."""
-        cost = [INF] * self.n_facts
-        sup = [-1] * self.n_facts
+        cost, sup, heap = self._seeded(init, costs)
         unsat = self.n_pre[:]
         opv = [0] * self.n_ops
-        heap = []
         pre_of, add = self.pre_of, self.add
-        for f in init:
-            if cost[f] != 0:
-                cost[f] = 0
-                heap.append((0, f))
-        for i in self.free:
-            c = costs[i]
-            for g in add[i]:
-                if c < cost[g]:
-                    cost[g] = c
-                    sup[g] = i
-                    heap.append((c, g))
-        heapq.heapify(heap)
         is_goal = self.is_goal_fact
         goals_left = len(self.goal_set)
         pop, push = heapq.heappop, heapq.heappush
