@@ -98,9 +98,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
             which = meter.check(expanded, generated, len(nodes))
             mask = meter.mask
             if which:
-                r = budget_result(name, which, meter, expanded, generated, len(nodes))
-                r.heuristic, r.initial_h = used, h0
-                return r
+                return budget_result(name, which, meter, expanded, generated, len(nodes), heuristic=used,
+                                     initial_h=h0)
             if switching and expanded >= SWITCH_AFTER:
                 switching = False
                 h = HEURISTICS["pdb"](model)
@@ -163,9 +162,8 @@ def _layered(model: Model, meter: Meter, name: str) -> Result:
                 which = meter.check(expanded, generated, len(parents))
                 mask = meter.mask
                 if which:
-                    r = budget_result(name, which, meter, expanded, generated, len(parents))
-                    r.heuristic, r.initial_h = "blind", 0
-                    return r
+                    return budget_result(name, which, meter, expanded, generated, len(parents),
+                                         heuristic="blind", initial_h=0)
             known = len(below)
             generated += fresh(state, parents, below)
             if len(below) > known and any(map(is_goal, below[known:])):

@@ -128,9 +128,12 @@ BUDGET_WORDS = {
 }
 
 
-def budget_result(solver: str, which: str, meter: Meter, expanded: int, generated: int, stored: int) -> Result:
+def budget_result(solver: str, which: str, meter: Meter, expanded: int, generated: int, stored: int,
+                  **fields) -> Result:
+    """The result of a run its budget stopped; `fields` are further Result fields (the
+    heuristic, a learner's episodes)."""
     return meter.finish(Result(solver=solver, solved=False, status="budget", expanded=expanded,
-                               generated=generated, stored=stored,
+                               generated=generated, stored=stored, **fields,
                                budget=which, message=f"stopped: {BUDGET_WORDS[which]} ran out"))
 
 

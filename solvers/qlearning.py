@@ -124,9 +124,7 @@ def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed
                         "greedy_steps": len(plan) if ok else None})
 
     if stopped:
-        r = budget_result("qlearning", stopped, meter, steps_total, steps_total, len(seen))
-        r.episodes = history
-        return r
+        return budget_result("qlearning", stopped, meter, steps_total, steps_total, len(seen), episodes=history)
 
     plan, ok = greedy_rollout(model, q, max_steps, q_init)
     cost = sum(model.action_costs[a] for a in plan) if ok else None

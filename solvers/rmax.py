@@ -226,9 +226,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
                 which = meter.check(steps_total, steps_total, 0)
                 if which:
                     from .base import budget_result
-                    r = budget_result("rmax", which, meter, steps_total, steps_total, 0)
-                    r.episodes = history
-                    return r
+                    return budget_result("rmax", which, meter, steps_total, steps_total, 0, episodes=history)
             s, kind = n, outcome
             if kind is not None:
                 break
