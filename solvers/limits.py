@@ -28,8 +28,12 @@ GRACE_SHARE = 0.02
 REPEAT_SECONDS = 0.25  # how often the timer fires again once the limit is spent
 
 
-class BudgetExceeded(Exception):
-    """A budget ran out outside a solver's own checks; `which` names it like Result.budget."""
+class BudgetExceeded(BaseException):
+    """A budget ran out outside a solver's own checks; `which` names it like Result.budget.
+
+    A BaseException, as KeyboardInterrupt is: the timer raises it wherever the process
+    is, and code that keeps an `except Exception` (the PDDL export records per-value
+    errors that way) must not swallow it."""
 
     def __init__(self, which: str):
         super().__init__(which)
