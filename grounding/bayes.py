@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import BccError
 from .loglinear import MIN_COUNT, command_features
-from .model_file import JsonModelFile
+from .model_file import JsonModelFile, expect_format
 from .text import Speller
 
 FORMAT = "bcc-naive-bayes/1"
@@ -108,8 +108,7 @@ class NaiveBayes(JsonModelFile):
 
     @classmethod
     def from_json(cls, data, path: str | None = None) -> NaiveBayes:
-        if not isinstance(data, dict) or data.get("format") != FORMAT:
-            raise BccError(f"not a grounding model: expected \"format\": \"{FORMAT}\"", path)
+        expect_format(data, FORMAT, path)
         try:
             features = [str(f) for f in data["features"]]
             task_counts = {str(t): float(c) for t, c in data["task_counts"].items()}

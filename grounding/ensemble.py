@@ -16,7 +16,7 @@ import numpy as np
 from ..errors import BccError
 from .bayes import FORMAT as BAYES, NaiveBayes
 from .loglinear import FORMAT as LOGLINEAR, LogLinear
-from .model_file import JsonModelFile
+from .model_file import JsonModelFile, expect_format
 
 FORMAT = "bcc-ensemble/1"
 # (model class, its training options, its vote): tuned by 10-fold cross-validation over
@@ -62,8 +62,7 @@ class Ensemble(JsonModelFile):
 
     @classmethod
     def from_json(cls, data, path: str | None = None) -> Ensemble:
-        if not isinstance(data, dict) or data.get("format") != FORMAT:
-            raise BccError(f"not a grounding model: expected \"format\": \"{FORMAT}\"", path)
+        expect_format(data, FORMAT, path)
         members = data.get("members")
         if not isinstance(members, list) or not members or \
                 any(not isinstance(m, dict) or m.get("format") not in KINDS for m in members):

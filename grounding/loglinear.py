@@ -31,7 +31,7 @@ import numpy as np
 
 from ..errors import BccError
 from .lbfgs import minimise
-from .model_file import JsonModelFile
+from .model_file import JsonModelFile, expect_format
 from .text import Speller, words
 
 FORMAT = "bcc-loglinear/1"
@@ -206,8 +206,7 @@ class LogLinear(JsonModelFile):
 
     @classmethod
     def from_json(cls, data, path: str | None = None) -> LogLinear:
-        if not isinstance(data, dict) or data.get("format") != FORMAT:
-            raise BccError(f"not a grounding model: expected \"format\": \"{FORMAT}\"", path)
+        expect_format(data, FORMAT, path)
         try:
             cf, tf = [str(x) for x in data["command_features"]], [str(x) for x in data["task_features"]]
             W = np.array(data["weights"], dtype=np.float64).reshape(len(cf), len(tf))

@@ -11,6 +11,12 @@ from pathlib import Path
 from ..errors import BccError, read_input
 
 
+def expect_format(data, fmt: str, path: str | None) -> None:
+    """Refuse JSON that is not a model of format `fmt` (each model kind checks its own)."""
+    if not isinstance(data, dict) or data.get("format") != fmt:
+        raise BccError(f"not a grounding model: expected \"format\": \"{fmt}\"", path)
+
+
 class JsonModelFile:
     def save(self, path: str | Path) -> None:
         from ..atomic import write_text
