@@ -83,7 +83,7 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
     if options.get("heuristic") in (None, "auto") and solver in ("gbfs", "wastar"):
         options["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
     elif solver == "astar" and options.get("heuristic") in (None, "auto") and options.get("weight", 1) == 1:
-        from .portfolio import solve   # LM-cut for a slice of the time, then blind (both optimal)
+        from .portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
     deadline = Deadline(budget)
     model = None
     try:

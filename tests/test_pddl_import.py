@@ -142,7 +142,7 @@ def test_cli_import_solves_and_prints_pddl_actions():
                                   "--json"])
     assert r.exit_code == 0, r.output
     out = json.loads(r.output)
-    assert out["cost"] == 9 and out["plan"][0].startswith("(pick ") and out["heuristic"] == "lmcut"
+    assert out["cost"] == 9 and out["plan"][0].startswith("(pick ") and out["heuristic"] == "auto (blind)"
 
 
 def test_the_plan_file_holds_one_action_a_line(tmp_path):
@@ -302,21 +302,57 @@ def test_a_conditional_add_that_restores_a_deleted_precondition_is_kept(tmp_path
 
 
 @pytest.mark.parametrize("problem", sorted(HAND_COSTS))
-def test_the_auto_portfolio_keeps_hand_derived_costs_when_lmcut_runs_out(problem, monkeypatch):
-    # `bcc import pddl` with A* auto: LM-cut for a slice, then blind. With no time for
-    # LM-cut, blind search must finish with the same (hand-derived) optimum.
+@pytest.mark.parametrize("blind_seconds, lmcut_seconds, used", [
+    (60.0, 60.0, "auto (blind)"),                               # blind search's slice suffices
+    (1e-9, 60.0, "auto (blind, then lmcut)"),                   # blind stops at its first check
+    (1e-9, 1e-9, "auto (blind, lmcut, then blind)")])           # both slices run out
+def test_the_auto_portfolio_keeps_hand_derived_costs_in_every_phase(problem, blind_seconds, lmcut_seconds, used,
+                                                                   monkeypatch):
+    # `bcc import pddl` with A* auto: blind for a slice, LM-cut for a slice, then blind.
+    # Whichever phase finds the plan, it has the hand-derived optimum and replays to the goal.
     from bcc.pddl_io import portfolio
-    monkeypatch.setattr(portfolio, "LMCUT_SECONDS", 1e-9)
+    monkeypatch.setattr(portfolio, "BLIND_SECONDS", blind_seconds)
+    monkeypatch.setattr(portfolio, "LMCUT_SECONDS", lmcut_seconds)
     model = load(problem)
-    result = portfolio.solve(model, Budget(time_limit=60))
+    result = portfolio.solve(model, Budget(time_limit=600))
     assert result.solved and result.cost == HAND_COSTS[problem][1]
+    assert result.heuristic == used
     end, cost = replay(model, result.plan)
     assert model.is_goal(end) and cost == result.cost
-    monkeypatch.setattr(portfolio, "LMCUT_SECONDS", 60.0)
-    assert portfolio.solve(model, Budget(time_limit=60)).heuristic == "lmcut"
+
+
+def test_the_portfolio_counts_every_phase():
+    # Each phase starts afresh: the counters are the phases' sums, so an instant first
+    # phase (one expansion, stopped at its first check) adds one to the last's count.
+    from bcc.pddl_io import portfolio
+    model = load("gripper-3")
+    alone = get_solver("astar")(model, Budget(time_limit=600), heuristic="lmcut")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(portfolio, "BLIND_SECONDS", 1e-9)
+        both = portfolio.solve(model, Budget(time_limit=600))
+    assert both.heuristic == "auto (blind, then lmcut)"
+    assert both.expanded == alone.expanded + 1 and both.cost == alone.cost
+
+
+def test_the_portfolio_slices_follow_the_time_limit():
+    from bcc.pddl_io.portfolio import phases
+    assert phases(None) == [("blind", 1.0), ("lmcut", 10.0), ("blind", None)]
+    assert phases(120) == [("blind", 1.0), ("lmcut", 10.0), ("blind", None)]
+    assert phases(6) == [("blind", pytest.approx(0.3)), ("lmcut", pytest.approx(1.0)), ("blind", None)]
+
+
+def test_the_portfolio_reports_a_proof_of_no_plan(tmp_path):
+    # The goal needs (b), which no action adds: blind search's first phase explores the two
+    # reachable states and proves there is no plan, so no other phase runs.
+    (tmp_path / "d.pddl").write_text("""(define (domain n) (:predicates (a) (b))
+      (:action flip :precondition (a) :effect (not (a))))""")
+    (tmp_path / "p.pddl").write_text("(define (problem p) (:domain n) (:init (a)) (:goal (b)))")
+    from bcc.pddl_io import portfolio
+    result = portfolio.solve(import_pddl(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl")), Budget(time_limit=60))
+    assert not result.solved and result.status == "no_solution"
 
 
 def test_cli_import_uses_the_portfolio_for_astar_auto():
     r = CliRunner().invoke(main, ["import", "pddl", str(HERE / "gripper-domain.pddl"), str(HERE / "gripper-3.pddl"),
                                   "--json"])
-    assert r.exit_code == 0 and json.loads(r.stdout)["heuristic"] in ("lmcut", "auto (lmcut, then blind)")
+    assert r.exit_code == 0 and json.loads(r.stdout)["heuristic"].startswith("auto (")
