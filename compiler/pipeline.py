@@ -96,15 +96,19 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     built: dict = {}
 
     def relaxed_task(time_limit: float | None = None):
-        """The delete-relaxed view (relaxed.py), built once; None if it exceeds its limits."""
+        """The delete-relaxed view (relaxed.py), built once; None if it exceeds its limits.
+        Kept in the on-disk cache (it costs more than compiling), under the pattern
+        database's key plus the start's cells; a build stopped by its time limit is not."""
         if "task" not in built:
+            from .cache import cached_analysis
+            key = b"\0".join([source.encode(), layout.static_grid, initial, layout.start_cells,
+                               repr((n_values, search)).encode()])
             try:
-                built["task"] = relaxed.build(layout, actions, search, goal_ir, reach, n_values,
-                                               initial + layout.start_cells, time_limit)  # dense
-            except relaxed.RelaxedTooBig as exc:
-                if "time" in str(exc):
-                    return None  # another call, with more time, may still build it
-                built["task"] = None
+                found = cached_analysis("relaxed", key, lambda: _relaxed_or_none(
+                    layout, actions, search, goal_ir, reach, n_values, initial, time_limit))
+            except relaxed.RelaxedTooBig:
+                return None  # out of time: another call, with more time, may still build it
+            built["task"] = found.get("task") if isinstance(found, dict) else None
         return built["task"]
 
     report = {
@@ -144,6 +148,19 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         search_actions=tuple(search), lazy={"pattern_database": pattern_database,
                                                     "relaxed_task": relaxed_task,
                                                     "dense_functions": dense_functions})
+
+
+def _relaxed_or_none(layout, actions, search, goal_ir, reach, n_values, initial, time_limit) -> dict:
+    """{"task": the relaxed view, or None past its size limits}; raises RelaxedTooBig when
+    the time limit stops it (nothing to remember then)."""
+    try:
+        task = relaxed.build(layout, actions, search, goal_ir, reach, n_values, initial + layout.start_cells,
+                             time_limit)  # dense
+    except relaxed.RelaxedTooBig as exc:
+        if "time" in str(exc):
+            raise
+        task = None
+    return {"task": task}
 
 
 def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:

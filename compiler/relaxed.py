@@ -57,19 +57,28 @@ class RelaxedTask:
         return self.reader.facts(state)
 
 
+@dataclass
 class StateReader:
     """The one place that reads a state's variable values and cell contents. It reads the
     dense layout of compiler/layout.py (variables, then every mutable-layer cell);
     `to_dense` turns a state of the model into that layout (identity while states are
-    dense; the model's `dense` once states store only changed cells)."""
+    dense; the model's `dense` once states store only changed cells). Plain data, so a
+    built view can be kept in the on-disk cache (pipeline.py)."""
 
-    to_dense = None
+    groups: list        # per group: the state indices of its variables
+    bases: list         # per group: its first fact
+    strides: list       # per group: each variable's stride in the group's facts
+    grid_base: int      # the state index of the first mutable cell
+    cell_base: int      # the first cell fact
+    n_values: int       # facts per cell
+    n_cells: int
 
-    def __init__(self, layout, groups, fact_base, strides, cell_base, n_values):
-        self.groups = [[layout.by_var[v].index for v in g] for g in groups]
-        self.bases, self.strides = fact_base, strides
-        self.grid_base, self.cell_base, self.n_values = layout.grid_base, cell_base, n_values
-        self.n_cells = len(layout.layers) * layout.width * layout.depth
+    to_dense = None     # a class attribute, set per model (not a field: never cached)
+
+    @classmethod
+    def of(cls, layout, groups, fact_base, strides, cell_base, n_values) -> "StateReader":
+        return cls([[layout.by_var[v].index for v in g] for g in groups], fact_base, strides, layout.grid_base,
+                   cell_base, n_values, len(layout.layers) * layout.width * layout.depth)
 
     def facts(self, state) -> list:
         if self.to_dense is not None:
@@ -618,7 +627,7 @@ def build(layout, actions, search, goal, reach, n_values, initial, time_limit: f
     start = time.perf_counter()
     b = Builder(layout, actions, search, goal, reach, n_values,
                 math.inf if time_limit is None else start + time_limit)
-    reader = StateReader(layout, b.groups, b.bases, b.strides, b.cell_base, n_values)
+    reader = StateReader.of(layout, b.groups, b.bases, b.strides, b.cell_base, n_values)
     b.build_actions(reader.facts(initial))
     goal_facts = b.build_goal()
     all_ops = list(b.ops)

@@ -274,3 +274,60 @@ def test_manipulation_rooms_pruned_and_relaxed_agree_with_bfs(tmp_path):
     result = get_solver("astar")(model, BUDGET, heuristic="lmcut")
     assert result.solved and result.cost == bfs.cost
     assert result.expanded < bfs.expanded
+
+
+def test_the_relaxed_view_is_built_once_and_cached(tmp_path, monkeypatch):
+    """A second compile of the same dungeon reads the relaxed view from the on-disk cache
+    (the same facts, operators and goal, and the same heuristic values); another goal
+    builds its own; with the cache off it is rebuilt, equal to the cached one."""
+    from bcc.compiler import relaxed
+    monkeypatch.setenv("BCC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.delenv("BCC_NO_CACHE", raising=False)
+    calls = []
+    build = relaxed.build
+    monkeypatch.setattr(relaxed, "build", lambda *a, **k: calls.append(1) or build(*a, **k))
+    path = _write(tmp_path, "rooms2", generate_manipulation(2))
+
+    def view(task):
+        return (task.n_facts, task.pre, task.add, task.cost, task.action, task.goal,
+                task.guide.pre, task.guide.add, task.guide.cost, task.guide.goal)
+
+    first = compile_dungeon(path)
+    again = compile_dungeon(path)
+    assert view(again.data("relaxed_task")) == view(first.data("relaxed_task")) and len(calls) == 1
+    assert list((tmp_path / "cache" / "relaxed").glob("*.pickle"))
+    states = [first.initial] + [n for _, n in first.successors(first.initial)]
+    assert [relaxed_of(again).hff(s) for s in states] == [relaxed_of(first).hff(s) for s in states]
+    other = compile_dungeon(path, goal="not agentHasBlock(agent, burlap_stone)")
+    assert other.data("relaxed_task") is not None and len(calls) == 2
+    monkeypatch.setenv("BCC_NO_CACHE", "1")
+    assert view(compile_dungeon(path).data("relaxed_task")) == view(first.data("relaxed_task"))
+    assert len(calls) == 3
+
+
+def test_incremental_exploration_matches_a_fresh_one(tmp_path):
+    """explore_add keeps its operator counters from the last state it saw and moves them by
+    the facts that changed: on states visited in a scrambled order (far jumps, repeats)
+    its hadd costs of the goal facts must equal those of the plain exploration, which
+    starts from nothing each time."""
+    import random
+    model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
+    r = relaxed_of(model)
+    rng = random.Random(7)
+    states, frontier = [model.initial], [model.initial]
+    seen = {model.initial}
+    while frontier and len(states) < 400:
+        s = frontier.pop(rng.randrange(len(frontier)))
+        for _, n in model.successors(s):
+            if n not in seen and not model.is_failure(n):
+                seen.add(n)
+                states.append(n)
+                frontier.append(n)
+    order = states + rng.sample(states, len(states))
+    for view in (r, r.guide):
+        for s in order:
+            facts = view.task.state_facts(s)
+            fast, _ = view.explore_add(facts, view.cost)
+            slow, _, _ = view.explore(facts, view.cost, True, True)
+            assert view.goal_cost(fast, True) == view.goal_cost(slow, True)
+            assert all(fast[g] == slow[g] for g in view.goal)
