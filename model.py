@@ -50,6 +50,20 @@ def fresh_from(live: Callable, s: bytes, seen: dict, out: list) -> int:
     return len(nexts)
 
 
+def _expand_fresh(fresh: Callable, is_goal: Callable, states, seen: dict, outs) -> int:
+    """`Model.search_layers` for models without generated expanders: one group."""
+    out = outs[0]
+    k = 0
+    for s in states:
+        known = len(out)
+        k += fresh(s, seen, out)
+        for i in range(known, len(out)):
+            if is_goal(out[i]):
+                out[i], out[-1] = out[-1], out[i]
+                return ~k
+    return k
+
+
 @dataclass(frozen=True)
 class Grid:
     width: int
@@ -153,6 +167,7 @@ class Model:
     lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
     live_successors: Callable | None = None    # successors for search (see `search_successors`)
     fresh_successors: Callable | None = None   # live fused with a duplicate check (see `search_fresh`)
+    layer_expanders: tuple = ()                # `fresh` over runs of states, per group (see `search_layers`)
 
     def data(self, name: str, **options):
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
@@ -177,6 +192,20 @@ class Model:
         if self.fresh_successors is not None and self.live_successors is not None:
             return self.fresh_successors
         return functools.partial(fresh_from, self.search_successors())
+
+    def search_layers(self) -> tuple:
+        """Expanders for a layered search (breadth-first, blind with equal costs): group
+        g's `expand(states, seen, outs) -> generated` runs `search_fresh` over states all
+        made by one action (group 0: the start, and states made by actions nothing
+        undoes), leaving out the actions that undo it, whose next states are known
+        already. Each new next state goes to `outs[h]`, h the group of the action that
+        made it. When a new one is a goal, it returns at once the count's complement (a
+        negative number), the goal being the last of its group's list. The states handed
+        in must not be goals. Generated with the model where it can be; else one group
+        over `search_fresh`."""
+        if self.layer_expanders and self.live_successors is not None:
+            return self.layer_expanders
+        return (functools.partial(_expand_fresh, self.search_fresh(), self.is_goal),)
 
     def view(self, state: bytes) -> StateView:
         """The one accessor for reading a state's variables and cells."""

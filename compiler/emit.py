@@ -70,6 +70,24 @@ def _var_reads(node) -> tuple[set, bool]:
     return out, complex_
 
 
+def _fixed_reads(node, layout: Layout) -> tuple[set, bool]:
+    """`_var_reads`, where a cell of a layer no action changes (its x and z aside) reads
+    nothing that can change: the goal `agent on gold` reads the agent's position only."""
+    if isinstance(node, ir.Cell) and isinstance(node.y, ir.Const) and layout.layer_index(node.y.value) is None:
+        x, cx = _fixed_reads(node.x, layout)
+        z, cz = _fixed_reads(node.z, layout)
+        return x | z, cx or cz
+    if isinstance(node, ir.Var):
+        return {node.var}, False
+    complex_ = isinstance(node, (ir.VarAt, ir.Cell, ir.CellLoop))
+    out: set = set()
+    for child in ir.children(node):
+        r, c = _fixed_reads(child, layout)
+        out |= r
+        complex_ |= c
+    return out, complex_
+
+
 def _writes_any(effects, variables: set, layout: Layout) -> bool:
     """May the effects change one of `variables` (a keyed write may change any)?"""
     for e in effects:
@@ -113,6 +131,9 @@ def _constant_stores(effects, layout: Layout) -> list:
         out.append((slot.index, int(e.value.value) - slot.lo))
     return out
 
+
+MAX_GROUPS = 8        # layer expanders per model past the plain one, at most (`layer_functions`)
+MAX_INLINED = 2000    # inlined action bodies over all layer expanders, at most
 
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}   # c OP v  <=>  v MIRROR[OP] c
 
@@ -513,16 +534,33 @@ class Emitter:
         next states `live` would have listed (duplicates included). No pair, no list."""
         self.uses_cells = False
         live = failure is not None
-        reads, complex_failure = _var_reads(failure) if live else (set(), False)
         failure_false = live and isinstance(failure, ir.Const) and not failure.value
         lines = ["    _k = 0"] if fresh else ["    out = []"]
         if live and not failure_false:
             slow = "_fresh_slow(s, seen, out)" if fresh else "_live_slow(s)"
             lines.append(f"    if {self.ex(failure)}: return {slow}")
+        lines += self._search_body(actions, search, failure, "    ",
+                                   lambda i, state, indent: self._keep(i, state, indent, fresh))
+        lines.append("    return _k" if fresh else "    return out")
+        name = "fresh" if fresh else "live" if live else "successors"
+        return self._function(f"def {name}(s, seen, out):" if fresh else f"def {name}(s):", lines)
+
+    def _search_body(self, actions: list[GroundAction], search: list[int], failure, base: str, keep,
+                     skip=frozenset()) -> list[str]:
+        """Every search action but those in `skip`, inlined: its lets, its preconditions as
+        nested ifs, its next state; `keep(i, state, indent)` gives the lines that hand the
+        next state on. With `failure`, what `live` leaves out is left out (see
+        `successors_source`)."""
+        live = failure is not None
+        reads, complex_failure = _var_reads(failure) if live else (set(), False)
+        failure_false = live and isinstance(failure, ir.Const) and not failure.value
+        lines = []
         for i in search:
+            if i in skip:
+                continue
             a = actions[i]
-            lines.append(f"    # action {i}")  # a number, never the name: comments carry no input text
-            indent = "    "
+            lines.append(f"{base}# action {i}")  # a number, never the name: comments carry no input text
+            indent = base
             for kind, text in self.action_parts(a):
                 if kind == "let":
                     lines.append(indent + text)
@@ -538,13 +576,75 @@ class Emitter:
             lines += made
             if live and not failure_false and (complex_failure or _writes_any(a.effects, reads, self.L)):
                 lines.append(f"{indent}t = {result}")
-                lines.append(f"{indent}if not {self.failure_on_t(failure)} or goal(t):")
-                lines += self._keep(i, "t", indent + "    ", fresh)
+                lines.append(f"{indent}if not {self._test_on_t(failure, 'failure')} or goal(t):")
+                lines += keep(i, "t", indent + "    ")
             else:
-                lines += self._keep(i, result, indent, fresh)
-        lines.append("    return _k" if fresh else "    return out")
-        name = "fresh" if fresh else "live" if live else "successors"
-        return self._function(f"def {name}(s, seen, out):" if fresh else f"def {name}(s):", lines)
+                lines += keep(i, result, indent)
+        return lines
+
+    def layer_source(self, name: str, actions: list[GroundAction], search: list[int], goal, failure,
+                     group_of: dict, skip=frozenset()) -> str:
+        """`name(states, seen, outs)`: `fresh` over a run of states in one loop, for a
+        layered search (breadth-first, blind with equal costs). A next state not yet in
+        `seen` is stored there (its parent as value) and appended to `outs[g]`, g the
+        group of the action that made it (`group_of`, else 0), so the next layer knows
+        which actions undid it (`skip`: this function's states were all made by an action
+        those undo; their next states are certain duplicates, never built). It returns
+        how many next states there were; when one is a goal, at once, the count's
+        complement (negative), that goal being the last of its group's list. The goal
+        is tested only after actions that may change it (every state handed in is not a
+        goal), inline where it reads only variables and fixed cells."""
+        self.uses_cells = False
+        failure_false = isinstance(failure, ir.Const) and not failure.value
+        goal_reads, goal_complex = _fixed_reads(goal, self.L)
+        goal_test = self._test_on_t(goal, "goal")
+        groups = sorted({group_of.get(i, 0) for i in search if i not in skip} | {0})
+        body = []
+        if not failure_false:
+            body += [f"        if {self.ex(failure)}:",
+                     "            _r = _layer_slow(s, seen, outs)",
+                     "            if _r < 0: return ~(_k + ~_r)",
+                     "            _k += _r",
+                     "            continue"]
+        counted = [0]   # next states every expansion makes: counted once per state
+
+        def keep(i: int, state: str, indent: str) -> list[str]:
+            out = [] if state == "t" else [f"{indent}t = {state}"]
+            if indent == "        ":
+                counted[0] += 1
+            else:
+                out.append(f"{indent}_k += 1")
+            out += [f"{indent}if t not in seen:",
+                    f"{indent}    seen[t] = s",
+                    f"{indent}    _a{group_of.get(i, 0)}(t)"]
+            if goal_complex or _writes_any(actions[i].effects, goal_reads, self.L):
+                out.append(f"{indent}    if {goal_test}: return ~_k")
+            return out
+
+        body += self._search_body(actions, search, failure, "        ", keep, skip)
+        if counted[0]:
+            body.insert(5 if not failure_false else 0, f"        _k += {counted[0]}")
+        nv = self.L.grid_base
+        prologue = []
+        if self.uses_cells:
+            prologue.append(f"        c = _S0 if len(s) == {nv} else _CC.get(s[{nv}:]) or _expand(s[{nv}:])")
+        if self.uses_int:
+            prologue.append("        _I = _from_bytes(s, 'little'); _L = len(s)")
+        self.uses_cells = self.uses_int = False
+        head = [f"def {name}(states, seen, outs):"]
+        head += [f"    _a{g} = outs[{g}].append" for g in groups]
+        head += ["    _k = 0", "    for s in states:"]
+        return "\n".join(head + prologue + body + ["    return _k"])
+
+    def _test_on_t(self, node, fallback: str) -> str:
+        """Condition `node` on next state `t`: inline when it reads only variables and
+        fixed cells, else a call of its generated function `fallback`."""
+        saved, self.uses_cells, self.state = self.uses_cells, False, "t"
+        try:
+            text = self.ex(node)
+            return f"{fallback}(t)" if self.uses_cells else text
+        finally:
+            self.uses_cells, self.state = saved, "s"
 
     @staticmethod
     def _keep(i: int, state: str, indent: str, fresh: bool) -> list[str]:
@@ -556,15 +656,6 @@ class Emitter:
                         f"{indent}if t not in seen:",
                         f"{indent}    seen[t] = s",
                         f"{indent}    out.append(t)"]
-
-    def failure_on_t(self, failure) -> str:
-        """The failure test of next state `t`: inline when it reads only variables."""
-        saved, self.uses_cells, self.state = self.uses_cells, False, "t"
-        try:
-            text = self.ex(failure)
-            return "failure(t)" if self.uses_cells else text
-        finally:
-            self.uses_cells, self.state = saved, "s"
 
     def apply_source(self, i: int, a: GroundAction) -> str:
         self.uses_cells = False
@@ -590,12 +681,12 @@ class Emitter:
         body = [f"    return {self.ex(node)}"]
         return self._function(f"def {name}(s):", body)
 
-    def build(self, actions: list[GroundAction], goal, failure, search: list[int]) -> tuple[dict, str]:
+    def build(self, actions: list[GroundAction], goal_ir, failure, search: list[int]) -> tuple[dict, str]:
         """`search`: the actions `successors` generates (all but those pruned as irrelevant)."""
         parts = [self.successors_source(actions, search), self.successors_source(actions, search, failure),
                  self.successors_source(actions, search, failure, fresh=True)]
         parts += [self.apply_source(i, a) for i, a in enumerate(actions)]
-        parts.append(self.predicate_source("goal", goal))
+        parts.append(self.predicate_source("goal", goal_ir))
         parts.append(self.predicate_source("failure", failure))
         source = "\n\n".join(parts) + "\n"
         ns = dict(self.ns)
@@ -604,5 +695,43 @@ class Emitter:
         ns["_live_slow"] = live_slow = \
             lambda s: [(a, n) for a, n in successors(s) if n != s and (not fails(n) or goal(n))]
         ns["_fresh_slow"] = functools.partial(fresh_from, live_slow)
+        if self.compact:
+            layers = self.layer_functions(actions, goal_ir, failure, search, ns)
+            source += "\n\n" + layers + "\n"
         return ns, source
+
+    def layer_functions(self, actions: list[GroundAction], goal, failure, search: list[int], ns: dict) -> str:
+        """`_layers` in `ns`: the layer expanders (`layer_source`) per group, group 0 for
+        the start and states made by actions nothing undoes, then one per action that some
+        action undoes (`inverses.py`), at most MAX_GROUPS; and their source."""
+        from .inverses import find_inverses
+        apply_fns = [ns.get(f"apply_{i}") for i in range(len(actions))]
+        undo = find_inverses(actions, search, self.L, apply_fns)
+        # each group is a copy of every action's code: a few, and not for thousands of actions
+        most = min(MAX_GROUPS, max(0, MAX_INLINED // max(1, len(search)) - 1))
+        makers = [i for i in search if i in undo][:most]
+        group_of = {a: g for g, a in enumerate(makers, 1)}
+        parts = [self.layer_source(f"layer_{g}", actions, search, goal, failure, group_of,
+                                   undo[makers[g - 1]] if g else frozenset())
+                 for g in range(len(makers) + 1)]
+        source = "\n\n".join(parts)
+        exec(compile(source, "<bcc model layers>", "exec"), ns)
+        live_slow, is_goal, groups = ns["_live_slow"], ns["goal"], tuple(group_of.get(i, 0) for i in range(len(actions)))
+
+        def layer_slow(s, seen, outs):
+            """A state that already fails: `live`'s filter, then the same bookkeeping."""
+            k = 0
+            for a, n in live_slow(s):
+                k += 1
+                if n not in seen:
+                    seen[n] = s
+                    outs[groups[a]].append(n)
+                    if is_goal(n):
+                        return ~k
+            return k
+
+        ns["_layer_slow"] = layer_slow
+        ns["_layers"] = tuple(ns[f"layer_{g}"] for g in range(len(makers) + 1))
+        ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
+        return source
 

@@ -124,6 +124,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         "grounded_actions": len(actions),
         "never_applicable": [actions[i].name for i in range(len(actions)) if i not in reach.applicable],
         "pruned_from_search": [actions[i].name for i in range(len(actions)) if i not in search],
+        # b undoes a: b(a(s)) == s wherever a changes s (compiler/inverses.py); blind search skips it
+        "undone_by": {actions[a].name: [actions[b].name for b in undo] for a, undo in ns["_undo"].items()},
         "state_variables": len(layout.slots),
         "mutable_cells": len(layout.layers) * dungeon.width * dungeon.depth,
         "mutable_layers": list(layout.layers),
@@ -138,7 +140,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["live"],
-        fresh_successors=ns["fresh"],
+        fresh_successors=ns["fresh"], layer_expanders=ns["_layers"],
         apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
         why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),

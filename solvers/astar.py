@@ -12,7 +12,7 @@ of states (the last in is expanded first). With integer costs and w = 1 a key is
 costs an integer), so a push is an append and a pop a list pop; the heap only orders the
 few distinct keys. A state's g is read back from its key, so entries are bare states.
 Blind search with equal action costs expands the same states in the same order with no
-keys at all (`_layered`): layer by layer, over `Model.search_fresh`.
+keys at all (`_layered`): layer by layer, over `Model.search_layers`.
 
 Heuristic `auto` (the default) starts with the cheap `manhattan` and, if the search is
 still running after SWITCH_AFTER expansions, builds the pattern database and re-sorts the
@@ -26,8 +26,9 @@ import heapq
 import math
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result, parent_plan
+from .base import Budget, Meter, Result, budget_result
 from .heuristics import HEURISTICS, position_blind
+from .layers import layered
 from .options import Option, declare, heuristic_option
 
 SWITCH_AFTER = 4096
@@ -138,44 +139,8 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
 def _layered(model: Model, meter: Meter, name: str) -> Result:
     """Blind A* when every action costs the same: f = g orders states by depth, so the
     open list is the layer being expanded (last in, first out, as the buckets would) and
-    the next one. A state's first path is then a cheapest one, so the loop keeps only
-    parents and drops every state seen before inside `Model.search_fresh`. New states are
-    goal-tested as they are generated: a goal one layer down is a cheapest one, and the
-    rest of the layer need not be expanded (as Fast Downward's blind heuristic, 0 only
-    on goals, pops a generated goal next; mystery p02 has millions of states a layer)."""
-    start, budget = model.initial, meter.budget
-    parents = {start: None}
-    fresh, is_goal = model.search_fresh(), model.is_goal
-    mask, max_states = meter.mask, budget.max_states
-    expanded = generated = 0
-    if is_goal(start):   # every other state is goal-tested when generated
-        return meter.finish(Result(solver=name, solved=True, status="solved", plan=[], cost=0, expanded=0,
-                                   generated=0, stored=1, heuristic="blind", initial_h=0))
-    layer: list = [start]
-    while layer:
-        below: list = []
-        pop = layer.pop
-        while layer:
-            state = pop()
-            expanded += 1
-            if not expanded & mask or max_states is not None and len(parents) > max_states:
-                which = meter.check(expanded, generated, len(parents))
-                mask = meter.mask
-                if which:
-                    return budget_result(name, which, meter, expanded, generated, len(parents),
-                                         heuristic="blind", initial_h=0)
-            known = len(below)
-            generated += fresh(state, parents, below)
-            if len(below) > known and any(map(is_goal, below[known:])):
-                goal = next(t for t in below[known:] if is_goal(t))
-                plan, cost = parent_plan(model, parents, goal)
-                return meter.finish(Result(solver=name, solved=True, status="solved", plan=plan, cost=cost,
-                                           expanded=expanded, generated=generated, stored=len(parents),
-                                           heuristic="blind", initial_h=0))
-        layer = below
-    return meter.finish(Result(solver=name, solved=False, status="no_solution", expanded=expanded,
-                               generated=generated, stored=len(parents), heuristic="blind", initial_h=0,
-                               message="no plan exists: every reachable state was explored"))
+    the next one; a state's first path is a cheapest one (solvers/layers.py)."""
+    return layered(model, meter, name, lifo=True, heuristic="blind", initial_h=0)
 
 
 def _plan(model: Model, nodes: dict, state) -> tuple[list[str], int]:

@@ -1,0 +1,218 @@
+"""The layered search's pieces: which actions undo which (compiler/inverses.py), proven
+against brute force; the generated layer expanders (`Model.search_layers`) against
+`fresh`; and plans and costs of the searches that use them against independent ones."""
+import dataclasses
+from collections import deque
+
+import pytest
+
+from bcc.compiler import compile_dungeon
+from bcc.compiler.dungeon import shipped_dungeons
+from bcc.compiler.inverses import undoes
+from bcc.solvers import Budget, get_solver
+
+
+def reachable(model, limit=3000):
+    """The first `limit` states a breadth-first walk over `successors` reaches, failing ones included."""
+    seen, frontier = {model.initial: None}, deque([model.initial])
+    while frontier and len(seen) < limit:
+        state = frontier.popleft()
+        for _, n in model.successors(state):
+            if n not in seen:
+                seen[n] = None
+                frontier.append(n)
+    return list(seen)
+
+
+def undone_by(model) -> dict:
+    names = model.action_names
+    return {names.index(a): [names.index(b) for b in bs] for a, bs in model.report["undone_by"].items()}
+
+
+@pytest.mark.parametrize("name", shipped_dungeons())
+def test_every_inverse_found_undoes_its_action_on_every_reachable_state(name):
+    model = compile_dungeon(name, prune=False)
+    undo = undone_by(model)
+    checked = 0
+    for s in reachable(model):
+        for a, bs in undo.items():
+            t = model.apply(a, s)
+            if t is None or t == s:
+                continue
+            for b in bs:
+                assert model.apply(b, t) == s, (model.action_names[a], model.action_names[b])
+                checked += 1
+    assert checked or not undo
+
+
+def test_the_minecraft_turns_and_looks_are_found_and_nothing_else():
+    # By hand: rotate_left sets d = (d + 3) % 4 and rotate_right d = (d + 1) % 4, each the
+    # other's inverse on all 4 facings; look_down sets looking = 1, look_ahead 0, so where
+    # one changes the state the other puts it back. change_item (+1 mod 9) is undone by
+    # no single action; move_forward, destroy_block, place_block read cells.
+    model = compile_dungeon("tough_maze")
+    assert model.report["undone_by"] == {"rotate_left": ["rotate_right"], "rotate_right": ["rotate_left"],
+                                         "look_down": ["look_ahead"], "look_ahead": ["look_down"]}
+
+
+def test_undoes_tries_every_value_where_the_action_changes_the_state():
+    wrap = lambda s: bytes([(s[0] + 1) % 4])                      # turn: 3 -> 0
+    back = lambda s: bytes([s[0] - 1]) if s[0] > 0 else None      # un-turn, not from 0
+    back_wrap = lambda s: bytes([(s[0] + 3) % 4])
+    assert not undoes(wrap, back, [(0, 3)], 1)        # fails only at 3 -> 0 -> (not applicable)
+    assert undoes(wrap, back_wrap, [(0, 3)], 1)
+    toggle = lambda s: bytes([1 - s[0]])
+    assert undoes(toggle, toggle, [(0, 1)], 1)
+    keep = lambda s: s
+    assert not undoes(keep, keep, [(0, 3)], 1)        # never changes anything: nothing proven
+    assert not undoes(lambda s: bytes([1]), lambda s: bytes([0]), [(0, 2)], 1)   # 2 -> 1 -> 0
+
+
+LINE_DOMAIN = """\
+domain: lamps
+types:
+  tile: {values: [empty, floor, goal]}
+classes:
+  token:
+    position: [x, y, z]
+    attributes:
+      x: {type: int, range: [0, width - 1]}
+      y: {type: int, range: [0, 0]}
+      z: {type: int, range: [0, 0]}
+      lamp: {type: bool, default: false}
+      dial: {type: int, range: [0, 3]}
+  cell:
+    key: [x, y, z]
+    attributes:
+      x: {type: int, range: [0, width - 1]}
+      y: {type: int, range: [0, height - 1]}
+      z: {type: int, range: [0, depth - 1]}
+      kind: {type: tile, default: empty}
+dungeon:
+  grid: cell
+  agent: token
+functions:
+  done: {params: {t: token}, body: "cell[t.x, 0, t.z].kind == goal and t.lamp and t.dial == 2"}
+actions:
+  right:
+    params: {t: token}
+    pre: t.x + 1 < width
+    effect: t.x = t.x + 1
+  left:
+    params: {t: token}
+    pre: t.x > 0
+    effect: t.x = t.x - 1
+  switch:
+    params: {t: token}
+    effect: t.lamp = not t.lamp
+  turn:
+    params: {t: token}
+    effect: t.dial = (t.dial + 1) % 4
+  unturn:
+    params: {t: token}
+    pre: t.dial > 0
+    effect: t.dial = t.dial - 1
+"""
+
+
+def lamps(tmp_path):
+    (tmp_path / "lamps.yaml").write_text(LINE_DOMAIN)
+    (tmp_path / "d.yaml").write_text('domain: lamps.yaml\nheight: 1\nlegend: {".": [floor], "G": [goal]}\n'
+                                     'map: |\n  ....G.\nagent: {start: [0, 0, 0]}\ngoal: done(agent)\n')
+    return compile_dungeon(tmp_path / "d.yaml")
+
+
+def test_inverses_in_a_domain_of_its_own(tmp_path):
+    # right/left move x by one within the line: each undoes the other where it applies.
+    # switch toggles the lamp: its own inverse. unturn undoes turn except from 3 (turn
+    # gives 0, where unturn does not apply), so it is not an inverse of turn; turn undoes
+    # unturn (d - 1 then + 1, d > 0).
+    model = lamps(tmp_path)
+    assert model.report["undone_by"] == {"right": ["left"], "left": ["right"], "switch": ["switch"],
+                                         "unturn": ["turn"]}
+    # By hand: 4 steps right, 1 switch, 2 turns (or... unturn from 0 does not apply): 7.
+    for solver, options in [("bfs", {}), ("astar", {"heuristic": "blind"})]:
+        result = get_solver(solver)(model, Budget(), **options)
+        assert result.cost == 7
+        assert replay(model, result.plan)
+
+
+def replay(model, plan) -> bool:
+    s = model.initial
+    for name in plan:
+        s = model.apply(model.action_index(name), s)
+        if s is None:
+            return False
+    return model.is_goal(s)
+
+
+def expands_as_fresh(model, expander, groups: int, s, seen: dict) -> None:
+    """`expander([s], ...)` makes the new states `fresh(s, ...)` does, with the same
+    parents; where one is a goal it stops there: the goal last of its group, and no more."""
+    expected_seen, out = dict(seen), []
+    count = model.search_fresh()(s, expected_seen, out)
+    outs = [[] for _ in range(groups)]
+    got_seen = dict(seen)
+    k = expander([s], got_seen, outs)
+    new = [t for o in outs for t in o]
+    if any(map(model.is_goal, out)):
+        assert k < 0 and ~k <= count
+        assert set(new) <= set(out) and got_seen.items() <= expected_seen.items()
+        assert sum(model.is_goal(o[-1]) for o in outs if o) == 1
+        assert not any(model.is_goal(t) for o in outs for t in o[:-1])
+    else:
+        assert 0 <= k <= count
+        assert sorted(new) == sorted(out)
+        assert got_seen == expected_seen
+    return k, count
+
+
+@pytest.mark.parametrize("name", shipped_dungeons())
+def test_layer_expanders_are_fresh_less_the_undoing_actions(name):
+    """Group 0 expands as `fresh` does; a state made by an action with inverses, with its
+    parent seen, yields the same new states as `fresh` (the skipped ones are that parent)."""
+    model = compile_dungeon(name)
+    expanders = model.search_layers()
+    assert expanders is model.layer_expanders   # generated, not the fallback
+    undo = undone_by(model)
+    makers = [a for a in model.search_actions if a in undo]
+    assert len(expanders) == 1 + len(makers)
+    states = [s for s in reachable(model, 600) if not model.is_goal(s)]
+    skipped = 0
+    for i, s in enumerate(states):
+        if model.is_failure(s) and i:
+            continue
+        k, count = expands_as_fresh(model, expanders[0], len(expanders), s, dict.fromkeys(states[:i:3], "old"))
+        assert k < 0 or k == count
+        for g, a in enumerate(makers, 1):
+            t = model.apply(a, s)
+            if t is None or t == s or model.is_goal(t) or model.is_failure(t):
+                continue
+            k, count = expands_as_fresh(model, expanders[g], len(expanders), t, {s: None, t: s})
+            skipped += k >= 0 and count - k
+    assert skipped or not makers
+
+
+@pytest.mark.parametrize("name", ["bridge", "easy_maze", "four_rooms", "grid"])
+def test_layered_searches_find_bfs_costs_with_and_without_generated_expanders(name):
+    """Blind A* (layered) and BFS, over the generated expanders and over the one-group
+    fallback (`fresh` only), agree on the cost with an A* that keeps a priority queue
+    (the pattern database, consistent), and every plan replays to a goal."""
+    model = compile_dungeon(name)
+    plain = dataclasses.replace(model, layer_expanders=())
+    assert plain.search_layers() != model.search_layers()
+    reference = get_solver("astar")(model, Budget(), heuristic="pdb")
+    assert reference.solved
+    for m in (model, plain):
+        for solver, options in [("bfs", {}), ("astar", {"heuristic": "blind"})]:
+            result = get_solver(solver)(m, Budget(), **options)
+            assert result.solved and result.cost == reference.cost, (solver, m is plain)
+            assert replay(m, result.plan)
+
+
+def test_a_state_budget_is_not_overshot_by_more_than_one_expansion():
+    model = compile_dungeon("tough_maze")
+    for solver, options in [("bfs", {}), ("astar", {"heuristic": "blind"})]:
+        result = get_solver(solver)(model, Budget(max_states=5000), **options)
+        assert result.status == "budget" and result.budget == "max_states"
+        assert 5000 < result.stored <= 5000 + len(model.search_actions)
