@@ -57,10 +57,10 @@ def _expand_fresh(fresh: Callable, is_goal: Callable, states, seen: dict, outs) 
     for s in states:
         known = len(out)
         k += fresh(s, seen, out)
-        for i in range(known, len(out)):
-            if is_goal(out[i]):
-                out[i], out[-1] = out[-1], out[i]
-                return ~k
+        if len(out) > known and any(map(is_goal, out[known:])):
+            i = next(i for i in range(known, len(out)) if is_goal(out[i]))
+            out[i], out[-1] = out[-1], out[i]
+            return ~k
     return k
 
 

@@ -72,7 +72,7 @@ def _var_reads(node) -> tuple[set, bool]:
 
 def _fixed_reads(node, layout: Layout) -> tuple[set, bool]:
     """`_var_reads`, where a cell of a layer no action changes (its x and z aside) reads
-    nothing that can change: the goal `agent on gold` reads the agent's position only."""
+    nothing that can change: a goal "stand on a cell of this kind" reads the position only."""
     if isinstance(node, ir.Cell) and isinstance(node.y, ir.Const) and layout.layer_index(node.y.value) is None:
         x, cx = _fixed_reads(node.x, layout)
         z, cz = _fixed_reads(node.z, layout)
