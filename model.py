@@ -167,7 +167,6 @@ class Model:
     lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
     live_successors: Callable | None = None    # successors for search (see `search_successors`)
     fresh_successors: Callable | None = None   # live fused with a duplicate check (see `search_fresh`)
-    layer_expanders: tuple = ()                # `fresh` over runs of states, per group (see `search_layers`)
 
     def data(self, name: str, **options):
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
@@ -201,10 +200,11 @@ class Model:
         already. Each new next state goes to `outs[h]`, h the group of the action that
         made it. When a new one is a goal, it returns at once the count's complement (a
         negative number), the goal being the last of its group's list. The states handed
-        in must not be goals. Generated with the model where it can be; else one group
-        over `search_fresh`."""
-        if self.layer_expanders and self.live_successors is not None:
-            return self.layer_expanders
+        in must not be goals. Generated with the model where it can be (compiled on first
+        use: `lazy["layer_expanders"]`); else one group over `search_fresh`."""
+        made = self.data("layer_expanders") if self.live_successors is not None else None
+        if made:
+            return made
         return (functools.partial(_expand_fresh, self.search_fresh(), self.is_goal),)
 
     def view(self, state: bytes) -> StateView:

@@ -696,17 +696,20 @@ class Emitter:
             lambda s: [(a, n) for a, n in successors(s) if n != s and (not fails(n) or goal(n))]
         ns["_fresh_slow"] = functools.partial(fresh_from, live_slow)
         if self.compact:
-            layers = self.layer_functions(actions, goal_ir, failure, search, ns)
-            source += "\n\n" + layers + "\n"
+            from .inverses import find_inverses
+            undo = find_inverses(actions, search, self.L, [ns[f"apply_{i}"] for i in range(len(actions))])
+            ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
+            # compiled on first use: only breadth-first and blind searches run them
+            ns["_build_layers"] = functools.partial(self.layer_functions, actions, goal_ir, failure, search, ns,
+                                                    undo)
         return ns, source
 
-    def layer_functions(self, actions: list[GroundAction], goal, failure, search: list[int], ns: dict) -> str:
-        """`_layers` in `ns`: the layer expanders (`layer_source`) per group, group 0 for
-        the start and states made by actions nothing undoes, then one per action that some
-        action undoes (`inverses.py`), at most MAX_GROUPS; and their source."""
-        from .inverses import find_inverses
-        apply_fns = [ns.get(f"apply_{i}") for i in range(len(actions))]
-        undo = find_inverses(actions, search, self.L, apply_fns)
+    def layer_functions(self, actions: list[GroundAction], goal, failure, search: list[int], ns: dict,
+                        undo: dict) -> tuple:
+        """The layer expanders (`layer_source`), compiled into `ns`: group 0 for the start
+        and states made by actions nothing undoes, then one per action that some action
+        undoes (`undo`, from inverses.py), at most MAX_GROUPS. Their source is kept in
+        `ns["_layers_source"]`."""
         # each group is a copy of every action's code: a few, and not for thousands of actions
         most = min(MAX_GROUPS, max(0, MAX_INLINED // max(1, len(search)) - 1))
         makers = [i for i in search if i in undo][:most]
@@ -715,7 +718,10 @@ class Emitter:
                                    undo[makers[g - 1]] if g else frozenset())
                  for g in range(len(makers) + 1)]
         source = "\n\n".join(parts)
+        for name, value in self.ns.items():   # tables the new code made
+            ns.setdefault(name, value)
         exec(compile(source, "<bcc model layers>", "exec"), ns)
+        ns["_layers_source"] = source
         live_slow, is_goal, groups = ns["_live_slow"], ns["goal"], tuple(group_of.get(i, 0) for i in range(len(actions)))
 
         def layer_slow(s, seen, outs):
@@ -731,7 +737,5 @@ class Emitter:
             return k
 
         ns["_layer_slow"] = layer_slow
-        ns["_layers"] = tuple(ns[f"layer_{g}"] for g in range(len(makers) + 1))
-        ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
-        return source
+        return tuple(ns[f"layer_{g}"] for g in range(len(makers) + 1))
 

@@ -140,7 +140,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["live"],
-        fresh_successors=ns["fresh"], layer_expanders=ns["_layers"],
+        fresh_successors=ns["fresh"],
         apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
         why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
@@ -149,6 +149,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         report=report, source=source, display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"pattern_database": pattern_database,
                                                     "relaxed_task": relaxed_task,
+                                                    "layer_expanders": functools.lru_cache(maxsize=1)(
+                                                        ns["_build_layers"]),
                                                     "dense_functions": dense_functions})
 
 

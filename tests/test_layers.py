@@ -173,7 +173,7 @@ def test_layer_expanders_are_fresh_less_the_undoing_actions(name):
     parent seen, yields the same new states as `fresh` (the skipped ones are that parent)."""
     model = compile_dungeon(name)
     expanders = model.search_layers()
-    assert expanders is model.layer_expanders   # generated, not the fallback
+    assert expanders is model.data("layer_expanders")   # generated, not the fallback
     undo = undone_by(model)
     makers = [a for a in model.search_actions if a in undo]
     assert len(expanders) == 1 + len(makers)
@@ -199,7 +199,7 @@ def test_layered_searches_find_bfs_costs_with_and_without_generated_expanders(na
     fallback (`fresh` only), agree on the cost with an A* that keeps a priority queue
     (the pattern database, consistent), and every plan replays to a goal."""
     model = compile_dungeon(name)
-    plain = dataclasses.replace(model, layer_expanders=())
+    plain = dataclasses.replace(model, lazy={k: v for k, v in model.lazy.items() if k != "layer_expanders"})
     assert plain.search_layers() != model.search_layers()
     reference = get_solver("astar")(model, Budget(), heuristic="pdb")
     assert reference.solved
