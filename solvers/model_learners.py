@@ -8,6 +8,7 @@ Both answer `predict(s, a)` with the next state, or None when they do not know y
 """
 from __future__ import annotations
 
+from ..errors import BccError
 from ..model import Model
 from .perception import NOTHING, Perception
 
@@ -52,6 +53,9 @@ class ObjectOriented:
     """
 
     def __init__(self, model: Model, m: int = 1, radius: int = 1):
+        if all(p is None for p in model.position):
+            raise BccError("rmax's oo model learner perceives the grid around an agent, and this model has no agent "
+                           "position (e.g. an imported PDDL task): use -O model=tabular")
         self.model, self.m = model, m
         self.sense = Perception(model, radius)
         self.exact = {}          # (action, features) -> effect
