@@ -365,7 +365,7 @@ def _cost(a, env, prob: Problem, dom: Domain) -> int:
     value = prob.function_values.get(key)
     if value is None:
         raise BccError(f"the cost of action {a.name} reads ({' '.join((key[0], *key[1]))}), "
-                       "which the problem's :init does not give", prob.path)
+                       "which the problem's :init does not give", dom.path, *a.where)
     return value
 
 

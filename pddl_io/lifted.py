@@ -150,8 +150,10 @@ def _define(tree, kind: str, path: str) -> SList:
         if not isinstance(t, SList):
             raise err(t, f"expected (define ({kind} ...) ...), found {_show(t)}", path)
     if len(lists) != 1:
-        where = lists[1] if len(lists) > 1 else None
-        raise err(where, f"expected one (define ({kind} ...) ...) in the file, found {len(lists)}", path)
+        message = f"expected one (define ({kind} ...) ...) in the file, found {len(lists)}"
+        if not lists:   # nothing to point at: the file's start
+            raise BccError(message, path, 1, 1)
+        raise err(lists[1], message, path)
     d = lists[0]
     if len(d) < 2 or d[0] != "define" or not isinstance(d[1], SList) or len(d[1]) != 2 or d[1][0] != kind:
         raise err(d, f"expected (define ({kind} NAME) ...)", path)

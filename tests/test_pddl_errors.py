@@ -96,6 +96,17 @@ def test_a_cost_function_without_a_value(tmp_path):
     (tmp_path / "p.pddl").write_text(problem)
     with pytest.raises(BccError, match=r"reads \(road-length b c\), which the problem's :init does not give"):
         import_pddl(str(HERE / "road-domain.pddl"), str(tmp_path / "p.pddl"))
+    with pytest.raises(BccError) as caught:   # positioned at the action whose cost it is
+        import_pddl(str(HERE / "road-domain.pddl"), str(tmp_path / "p.pddl"))
+    assert caught.value.path.endswith("road-domain.pddl") and caught.value.line is not None
+
+
+@pytest.mark.parametrize("text", ["", "; only a comment\n"])
+def test_a_file_without_a_define_is_positioned_at_its_start(tmp_path, text):
+    (tmp_path / "p.pddl").write_text(text)
+    with pytest.raises(BccError, match=r"found 0") as caught:
+        import_pddl(str(HERE / "road-domain.pddl"), str(tmp_path / "p.pddl"))
+    assert (caught.value.line, caught.value.col) == (1, 1)
 
 
 def test_a_fractional_cost_is_refused_at_its_position(tmp_path):
