@@ -21,8 +21,8 @@ for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREAD
 
 from .errors import BccError, ModelError
 
-from .cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, print_result, progress_enabled,
-                         solver_flags, solver_request, write_output)
+from .cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
+                         print_result, progress_enabled, solver_flags, solver_request, time_limit_option, write_output)
 from .exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
 
 
@@ -112,8 +112,8 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal):
 @click.option("--solver", default="astar", show_default=True, help="Solver name (see `bcc solvers`).")
 @json_option
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help="Stop after this many seconds.")
-@click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help="Stop when the process uses this much memory [default: half the RAM].")
+@time_limit_option()
+@max_memory_option()
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE, one action a line (atomically).")
 @solver_flags
 @goal_option
@@ -307,8 +307,7 @@ def generate_rooms_cmd(stones, name, output, as_json):
 @click.option("--seed", type=int, default=0, show_default=True, help="The first seed.")
 @click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
               help="Runs at once (each a process of its own, through the batch API).")
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS",
-              help="Stop each run after this many seconds.")
+@time_limit_option("Stop each run after this many seconds.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write a PNG plot (needs the `plot` extra).")
 @json_option
 @goal_option

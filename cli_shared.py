@@ -4,12 +4,50 @@ options, JSON output, compiling a dungeon argument, progress, and printing a sol
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import sys
 
 import click
 
 from .exit_codes import EXIT_NO_SOLUTION, EXIT_OK
+
+def time_limit_option(help: str = "Stop after this many seconds.", **kwargs):
+    return click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help=help,
+                        **kwargs)
+
+
+def max_memory_option(help: str = "Stop when the process uses this much memory [default: half the RAM].", **kwargs):
+    return click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help=help, **kwargs)
+
+
+def budget_options(command):
+    """--time-limit and --max-memory for a command that is not a search: with
+    `within_budget`, they bound everything the command does."""
+    return time_limit_option()(max_memory_option()(command))
+
+
+@contextlib.contextmanager
+def within_budget(time_limit: float | None, max_memory: float | None, as_json: bool, where: str):
+    """Run a command's work under --time-limit and --max-memory (default: half the RAM).
+    A budget that runs out ends the command the way a solve's does: one line
+    `where: stopped: ... ran out` on stderr (with --json also one object on stdout,
+    status "budget"), exit 1. Files are written atomically, so none is left half written."""
+    from .solvers import Budget
+    from .solvers.base import BUDGET_WORDS
+    from .solvers.limits import BudgetExceeded, hard_limits
+    budget = Budget(time_limit=time_limit,
+                    max_memory_mb=max_memory if max_memory is not None else Budget.default().max_memory_mb)
+    try:
+        with hard_limits(budget, grace=0.0):   # nothing inside checks the budget itself: stop at the limit
+            yield budget
+    except BudgetExceeded as exc:
+        message = f"stopped: {BUDGET_WORDS[exc.which]} ran out"
+        if as_json:
+            emit_json({"status": "budget", "budget": exc.which, "message": message})
+        click.echo(f"{where}: {message}", err=True)
+        sys.exit(EXIT_NO_SOLUTION)
+
 
 goal_option = click.option("--goal", metavar="EXPR", help="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)'.")
 json_option = click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")

@@ -5,7 +5,8 @@ import sys
 
 import click
 
-from ..cli_shared import emit_json, goal_option, json_option, solver_flags, solver_request
+from ..cli_shared import (emit_json, goal_option, json_option, max_memory_option, solver_flags, solver_request,
+                          time_limit_option)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -43,9 +44,9 @@ def batch_group():
 @click.option("--backend", type=click.Choice(["local", "ray"]), default="local", show_default=True)
 @click.option("--workers", type=click.IntRange(min=1), help="Runs at once [default: the CPUs (local) or the cluster's CPUs (ray)].")
 @click.option("--address", help="ray: the cluster to join, `auto` or `ray://HOST:PORT` [default: start a local Ray].")
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help="Per run.")
+@time_limit_option("Per run.")
 @click.option("--max-states", type=click.IntRange(min=1), help="Per run.")
-@click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB", help="Per run [default: half the RAM / CPUs].")
+@max_memory_option("Per run [default: half the RAM / CPUs].")
 @goal_option
 @click.option("--out", required=True, type=click.Path(dir_okay=False), help="The results file (JSON Lines); runs already in it are skipped.")
 @json_option

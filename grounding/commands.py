@@ -10,7 +10,8 @@ import sys
 
 import click
 
-from ..cli_shared import compile_model, emit_json, json_option, print_result
+from ..cli_shared import (budget_options, compile_model, emit_json, json_option, print_result, time_limit_option,
+                          within_budget)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -56,11 +57,13 @@ def play_cmd(dungeon, record, command_text, as_json):
 @click.argument("command_text", metavar="COMMAND")
 @click.option("--demo", "demo_path", required=True, type=click.Path(dir_okay=False), help="A demonstration file (see `bcc play --record`).")
 @db_option
+@budget_options
 @json_option
-def learn_cmd(dungeon, command_text, demo_path, db, as_json):
+def learn_cmd(dungeon, command_text, demo_path, db, time_limit, max_memory, as_json):
     """Add a (COMMAND, demonstration) pair in DUNGEON to the dataset, with its inferred task."""
     from .learn import add_pair
-    added = add_pair(dungeon, command_text, demo_path, db)
+    with within_budget(time_limit, max_memory, as_json, dungeon):
+        added = add_pair(dungeon, command_text, demo_path, db)
     if as_json:
         emit_json(added)
         return
@@ -78,9 +81,16 @@ def learn_cmd(dungeon, command_text, demo_path, db, as_json):
               help="Also train on command/task pairs without demonstrations (JSON Lines, see `bcc corpus evaluate`); repeatable.")
 @click.option("--dungeon", default=None, help="The dungeon of --pairs lines that name none.")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the model to FILE (JSON, atomically).")
+@budget_options
 @json_option
-def train_cmd(db, with_corpus, pairs_paths, dungeon, output, as_json):
+def train_cmd(db, with_corpus, pairs_paths, dungeon, output, time_limit, max_memory, as_json):
     """Retrain the grounding model on the dataset (and --corpus, --pairs); store it there."""
+    from .dataset import default_path
+    with within_budget(time_limit, max_memory, as_json, str(db or default_path())):
+        _train(db, with_corpus, pairs_paths, dungeon, output, as_json)
+
+
+def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
     from . import corpus, pairs
     from .dataset import Dataset
     from .learn import train
@@ -142,8 +152,7 @@ def _translation(db, model_path):
 @click.argument("text", metavar="TEXT")
 @db_option
 @click.option("--model", "model_path", type=click.Path(dir_okay=False), help="Use this model file (from `bcc train -o`).")
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), default=60, show_default=True,
-              metavar="SECONDS", help="Planner time limit.")
+@time_limit_option("Planner time limit.", default=60, show_default=True)
 @json_option
 def command_cmd(dungeon, text, db, model_path, time_limit, as_json):
     """Interpret a natural-language command in DUNGEON and plan it.
@@ -220,12 +229,18 @@ def corpus_generate_cmd(pairs, seed, workers, as_json):
 @click.option("--from", "mode", type=click.Choice(["tasks", "demonstrations", "both"]), default="both", show_default=True,
               help="Train on the given tasks, on tasks inferred from planned demonstrations, or report both.")
 @click.option("--seed", type=int, default=0, show_default=True, help="Seed of the fold shuffle.")
+@budget_options
 @json_option
-def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, as_json):
+def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, time_limit, max_memory, as_json):
     """Train a fresh model on training pairs only; report held-out accuracy overall, per level,
     and a confusion table of tasks.
 
     Without --train: the shipped corpus's training split and held-out split."""
+    with within_budget(time_limit, max_memory, as_json, train_path or "corpus"):
+        _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json)
+
+
+def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json):
     if train_path is None:
         if test_path or folds or dungeon or levels:
             raise BccError("--test, --folds, --dungeon and --level need --train FILE")

@@ -12,7 +12,8 @@ from pathlib import Path
 
 import click
 
-from ..cli_shared import compile_model, emit_json, goal_option, json_option, solver_flags, solver_request
+from ..cli_shared import (compile_model, emit_json, goal_option, json_option, solver_flags, solver_request,
+                          time_limit_option)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -98,8 +99,7 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
 @click.option("--solver", default="astar", show_default=True, help="The planner (see `bcc solvers`).")
 @port_option
 @goal_option
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), default=60.0, show_default=True,
-              metavar="SECONDS", help="Seconds for each (re)plan.")
+@time_limit_option("Seconds for each (re)plan.", default=60.0, show_default=True)
 @click.option("--max-steps", type=click.IntRange(min=1), default=200, show_default=True,
               help="Stop after this many actions.")
 @click.option("--watch", type=click.FloatRange(min=0), default=0.0, metavar="SECONDS",

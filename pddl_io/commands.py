@@ -6,8 +6,9 @@ import sys
 
 import click
 
-from ..cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, print_result,
-                          progress_enabled, solver_flags, solver_request)
+from ..cli_shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option,
+                          max_memory_option, print_result, progress_enabled, solver_flags, solver_request,
+                          time_limit_option, within_budget)
 
 
 SEARCH_SHARE = 0.97   # of the time left after importing: the rest frees the search's tables
@@ -24,18 +25,21 @@ def export_group():
               help="Directory for domain.pddl and problem.pddl (created if missing).")
 @click.option("--max-states", type=click.IntRange(min=1), default=None,
               help="Abstract states the export may explore to bound each variable's values [default: 300000].")
+@budget_options
 @json_option
 @goal_option
-def export_pddl_cmd(dungeon, out_dir, max_states, as_json, goal):
+def export_pddl_cmd(dungeon, out_dir, max_states, time_limit, max_memory, as_json, goal):
     """Write DUNGEON as grounded STRIPS PDDL: DIR/domain.pddl and DIR/problem.pddl."""
     from ..atomic import write_text
     from .task import build_task
     from .writer import domain_text, problem_text
-    model = compile_model(dungeon, goal)
-    task = build_task(model, max_states)
+    with within_budget(time_limit, max_memory, as_json, dungeon):
+        model = compile_model(dungeon, goal)
+        task = build_task(model, max_states)
+        texts = {"domain.pddl": domain_text(task), "problem.pddl": problem_text(task)}   # both before either is written
     os.makedirs(out_dir, exist_ok=True)
     files = {}
-    for name, text in (("domain.pddl", domain_text(task)), ("problem.pddl", problem_text(task))):
+    for name, text in texts.items():
         path = os.path.join(out_dir, name)
         write_text(path, text)
         files[name] = {"path": path, "bytes": len(text.encode())}
@@ -58,11 +62,9 @@ def import_group():
 @click.argument("domain", type=click.Path(dir_okay=False))
 @click.argument("problem", type=click.Path(dir_okay=False))
 @click.option("--solver", default="astar", show_default=True, help="A bcc solver (see `bcc solvers`), or fd.")
-@click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS",
-              help="Stop after this many seconds (reading, grounding and search together).")
+@time_limit_option("Stop after this many seconds (reading, grounding and search together).")
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop the search after storing this many states.")
-@click.option("--max-memory", type=click.FloatRange(min=1), metavar="MB",
-              help="Stop when the process uses this much memory [default: half the RAM].")
+@max_memory_option()
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write the plan to FILE, one action a line (atomically).")
 @json_option

@@ -112,6 +112,22 @@ def test_an_expensive_goal_test_stops_at_the_time_limit(startup):
     assert code == 1 and data["budget"] == "time_limit"
 
 
+@pytest.mark.parametrize("command", [
+    ["train", "--db", "{tmp}/grounding.sqlite", "--corpus"],          # about 10 s of CPU
+    ["corpus", "evaluate"],                                            # the same training, then the held-out split
+    ["export", "pddl", "tough_maze", "-o", "{tmp}/out"],               # the value-domain fixpoint: seconds
+])
+def test_commands_that_are_not_searches_stop_at_the_time_limit(command, tmp_path, startup):
+    """Training, evaluating and exporting take seconds to minutes and are bounded too: a
+    spent --time-limit is one line and exit 1, like a solve's, and no file is left behind."""
+    argv = [a.format(tmp=tmp_path) for a in command]
+    code, data, wall, _ = run(*argv, "--time-limit", "0.5", "--json")
+    assert wall <= startup + 0.5 + 1.5, f"{wall:.1f} s for --time-limit 0.5"
+    assert code == 1 and data == {"status": "budget", "budget": "time_limit",
+                                  "message": "stopped: the time limit (--time-limit) ran out"}
+    assert not (tmp_path / "out").exists()
+
+
 def test_memory_budget_caps_what_the_process_allocates(tmp_path):
     """A memory budget smaller than what the search needs ends as a budget stop, and the
     process never holds much more than the budget (an allocation past it fails at once)."""
