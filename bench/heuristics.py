@@ -5,10 +5,13 @@
     python bench/heuristics.py                  # stones 1 2 4, 60 s per run
     python bench/heuristics.py --stones 1 2 4 8 --time-limit 120
     python bench/heuristics.py --quick          # stones 1 2, reference grid/bridge, 20 s
+    python bench/heuristics.py --stones 1 2 4 6 8 --reference --configs gbfs:hff --merge
+                                                # re-run some rows, keep the others in the json
 
 Prints a table and writes bench/heuristics.json. Every run is a subprocess of the
 installed `bcc solve --json` (its own memory, its own budget); `relaxed_build_seconds`
-is the time to build the relaxed view once per dungeon (measured apart). Expansions are
+is the time to build the relaxed view once per dungeon (measured apart; that build also
+leaves the view in bcc's on-disk cache, so the runs read it, unless --no-cache). Expansions are
 the figure to compare; timings on a shared machine are noisy: `cpu_seconds` (the whole
 `bcc` process's user + system time) suffers less from other load than `seconds` (wall,
 as `bcc` reports it).
@@ -17,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import resource
 import subprocess
 import sys
@@ -30,12 +34,15 @@ CONFIGS = [("astar", "blind"), ("astar", "auto"), ("astar", "hmax"), ("astar", "
 REFERENCE = ["grid", "bridge", "easy_maze", "tough_maze", "four_rooms"]
 
 
-def run(dungeon: str, solver: str, heuristic: str, time_limit: float) -> dict:
+def run(dungeon: str, solver: str, heuristic: str, time_limit: float, cache: bool = True) -> dict:
     cmd = ["bcc", "solve", dungeon, "--solver", solver, "--heuristic", heuristic, "--json",
            "--time-limit", str(time_limit)]
     start = time.perf_counter()
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit + 60)
+    env = dict(os.environ) if cache else dict(os.environ, BCC_NO_CACHE="1")
+    # A user's bcc imports from .pyc files; without them each run compiles bcc's source (~0.2 s).
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit + 60, env=env)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     wall = time.perf_counter() - start
     cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
@@ -46,7 +53,8 @@ def run(dungeon: str, solver: str, heuristic: str, time_limit: float) -> dict:
     return {"solved": data.get("solved"), "status": data.get("status"), "cost": data.get("cost"),
             "expanded": data.get("expanded"), "seconds": data.get("seconds"), "wall_seconds": round(wall, 3),
             "cpu_seconds": round(cpu, 3),
-            "initial_h": data.get("initial_h"), "budget": data.get("budget")}
+            "initial_h": data.get("initial_h"), "budget": data.get("budget"),
+            "cache": "warm" if cache else "off"}
 
 
 def build_seconds(dungeon: str) -> dict:
@@ -64,10 +72,18 @@ def main() -> int:
     ap.add_argument("--time-limit", type=float, default=60)
     ap.add_argument("--reference", nargs="*", default=REFERENCE)
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--configs", nargs="*", metavar="SOLVER:HEURISTIC",
+                    help="run only these configurations (default: all of CONFIGS)")
+    ap.add_argument("--no-cache", action="store_true",
+                    help="run bcc with BCC_NO_CACHE=1: every run builds the relaxed view (a cold start); "
+                         "by default the view built for relaxed_build_seconds is read from the on-disk cache")
+    ap.add_argument("--merge", action="store_true",
+                    help="replace the rows run in the existing json and keep its other rows")
     ap.add_argument("-o", "--output", default=str(HERE / "heuristics.json"))
     args = ap.parse_args()
     if args.quick:
         args.stones, args.time_limit, args.reference = [1, 2], 20, ["grid", "bridge"]
+    configs = CONFIGS if not args.configs else [tuple(c.split(":", 1)) for c in args.configs]
     from bcc.atomic import write_text
     from bcc.generate_rooms import generate_manipulation
     rows = []
@@ -81,13 +97,21 @@ def main() -> int:
         print(f"{'dungeon':<16} {'solver':<7} {'heuristic':<9} {'solved':<6} {'cost':>5} {'expanded':>9} {'seconds':>8} {'cpu':>6}")
         for label, ref in dungeons:
             info = build_seconds(ref)
-            for solver, heuristic in CONFIGS:
-                r = run(ref, solver, heuristic, args.time_limit)
+            for solver, heuristic in configs:
+                r = run(ref, solver, heuristic, args.time_limit, cache=not args.no_cache)
                 r.update({"dungeon": label, "solver": solver, "heuristic": heuristic, **info})
                 rows.append(r)
                 print(f"{label:<16} {solver:<7} {heuristic:<9} {str(r['solved']):<6} {str(r['cost']):>5} "
                       f"{str(r['expanded']):>9} {str(r['seconds']):>8} {r['cpu_seconds']:>6}", flush=True)
-    write_text(args.output, json.dumps({"time_limit": args.time_limit, "rows": rows}, indent=1) + "\n")
+    out = {"time_limit": args.time_limit, "rows": rows}
+    if args.merge and Path(args.output).exists():
+        old = json.loads(Path(args.output).read_text())
+        ran = {(r["dungeon"], r["solver"], r["heuristic"]) for r in rows}
+        kept = [dict(r, time_limit=r.get("time_limit", old.get("time_limit"))) for r in old.get("rows", [])
+                if (r["dungeon"], r["solver"], r["heuristic"]) not in ran]
+        out = {"time_limit": args.time_limit,
+               "rows": kept + [dict(r, time_limit=args.time_limit) for r in rows]}
+    write_text(args.output, json.dumps(out, indent=1) + "\n")
     print(f"wrote {args.output}", file=sys.stderr)
     return 0
 

@@ -18,6 +18,8 @@ from __future__ import annotations
 import heapq
 import math
 
+from .relaxed_additive import Additive
+
 INF = math.inf
 
 
@@ -44,10 +46,7 @@ class Relaxed:
             for f in add:
                 self.achievers[f].append(i)
         self.preferred: frozenset = frozenset()
-        # explore_add's counters for the last state it saw (see _rebase)
-        self._base: set = set()
-        self._unsat = self.n_pre[:]
-        self._ready = set(self.free)
+        self.additive = None   # explore_add's structure, built on its first call
         # hadd and hff ask `guide`, the view whose goal is reached by a last action
         # (compiler/relaxed_last.py), when there is one; a state where the goal holds needs
         # no last action, so there `holds` (the model's goal test) answers 0.
@@ -115,88 +114,12 @@ class Relaxed:
         return cost, sup, pcf
 
     def explore_add(self, init, costs):
-        """`explore` for hadd and hff (additive, stopping at the goal), the loop every hff
-        evaluation runs, made cheaper in two ways. The state's facts are not popped one by
-        one: their operator counters are kept from the last evaluation and moved by the
-        facts that changed (`_rebase`: a child differs from its parent in a few facts), and
-        the operators they alone enable fire at once. The queue holds each distinct cost
-        once, with the facts of that cost in a list (costs are few and often repeat)."""
-        ready = self._rebase(init)
-        n = self.n_facts
-        cost = [INF] * n
-        sup = [-1] * n
-        for f in init:
-            cost[f] = 0
-        is_goal = self.is_goal_fact
-        goals_left = sum(1 for g in self.goal_set if cost[g] != 0)   # each counted once, when popped
-        if not goals_left:
-            return cost, sup
-        add = self.add
-        buckets: dict = {}
-        for i in ready:
-            c = costs[i]
-            for g in add[i]:
-                if c < cost[g]:
-                    cost[g] = c
-                    sup[g] = i
-                    b = buckets.get(c)
-                    if b is None:
-                        buckets[c] = [g]
-                    else:
-                        b.append(g)
-        keys = sorted(buckets)
-        unsat = self._unsat[:]
-        opv = [0] * self.n_ops
-        pre_of = self.pre_of
-        pop, push, get = heapq.heappop, heapq.heappush, buckets.get
-        while keys:
-            c = pop(keys)
-            for f in buckets.pop(c):   # facts added to this bucket meanwhile are visited too
-                if c > cost[f]:
-                    continue
-                if is_goal[f]:
-                    goals_left -= 1
-                    if goals_left == 0:
-                        return cost, sup
-                for i in pre_of[f]:
-                    v = opv[i] + c
-                    opv[i] = v
-                    u = unsat[i] - 1
-                    unsat[i] = u
-                    if u == 0:
-                        v += costs[i]
-                        for g in add[i]:
-                            if v < cost[g]:
-                                cost[g] = v
-                                sup[g] = i
-                                b = get(v)
-                                if b is None:
-                                    buckets[v] = [g]
-                                    push(keys, v)
-                                else:
-                                    b.append(g)
-        return cost, sup
-
-    def _rebase(self, facts) -> set:
-        """Move the kept operator counters (preconditions outside the state) from the last
-        evaluated state to `facts`; returns the operators whose preconditions all hold."""
-        new = set(facts)
-        old = self._base
-        unsat, ready, pre_of = self._unsat, self._ready, self.pre_of
-        for f in old - new:
-            for i in pre_of[f]:
-                u = unsat[i]
-                if u == 0:
-                    ready.discard(i)
-                unsat[i] = u + 1
-        for f in new - old:
-            for i in pre_of[f]:
-                u = unsat[i] - 1
-                unsat[i] = u
-                if u == 0:
-                    ready.add(i)
-        self._base = new
-        return ready
+        """`explore` for hadd and hff (additive, stopping at the goal): the loop every hff
+        evaluation runs, in its cheaper form (relaxed_additive.py). The costs of the view's
+        facts are those `explore` gives; supporters may be its node operators (>= n_ops)."""
+        if self.additive is None:
+            self.additive = Additive(self.n_facts, self.pre, self.add, self.goal_set)
+        return self.additive.explore(init, costs)
 
     def goal_cost(self, cost, additive: bool):
         if self.goal is None:
@@ -239,6 +162,7 @@ class Relaxed:
             self.preferred = frozenset()
             return INF
         plan, stack, seen = set(), [g for g in self.goal if cost[g] > 0], set()
+        pre = self.additive.pre   # with the node operators that stand for shared preconditions
         while stack:
             f = stack.pop()
             if f in seen:
@@ -248,7 +172,9 @@ class Relaxed:
             if i < 0 or i in plan:
                 continue
             plan.add(i)
-            stack.extend(p for p in self.pre[i] if cost[p] > 0)
+            stack.extend(p for p in pre[i] if cost[p] > 0)
+        n_ops = self.n_ops
+        plan = {i for i in plan if i < n_ops}
         preferred = set()
         for i in plan:
             if all(cost[p] == 0 for p in self.pre[i]):
