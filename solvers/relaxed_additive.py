@@ -39,34 +39,46 @@ class Additive:
             for f in p:
                 freq[f] += 1
         order = [sorted(set(p), key=lambda f: (-freq[f], f)) for p in pre]
-        # Trie over the sorted preconditions; count how many operators pass each node.
-        passing: dict = {}
+        # Trie over the sorted preconditions (node 0 is the root): how many operators pass
+        # each node, each node's parent and last fact. Memory is linear in the preconditions.
+        child: dict = {}
+        passing, parent, last = [0], [-1], [-1]
+        paths = []
         for p in order:
-            for k in range(2, len(p)):   # a prefix of 2 or more facts, leaving at least one after it
-                key = tuple(p[:k])
-                passing[key] = passing.get(key, 0) + 1
-        node_fact: dict = {}             # prefix -> its conjunction fact
+            path, node = [0], 0
+            for f in p[:-1]:   # a node leaves at least one fact after it
+                nxt = child.get((node, f))
+                if nxt is None:
+                    nxt = child[node, f] = len(passing)
+                    passing.append(0)
+                    parent.append(node)
+                    last.append(f)
+                passing[nxt] += 1
+                path.append(nxt)
+                node = nxt
+            paths.append(path)
+        fact_of: dict = {}               # trie node -> its conjunction fact
         self.node_pre: list = []         # node operator k (index n_ops + k): its two preconditions
         self.node_add: list = []
         n = n_facts
 
-        def node(prefix):
+        def conjunction(node, depth):
             nonlocal n
-            f = node_fact.get(prefix)
+            f = fact_of.get(node)
             if f is None:
-                head = prefix[0] if len(prefix) == 2 else node(prefix[:-1])
-                f = node_fact[prefix] = n
+                head = last[parent[node]] if depth == 2 else conjunction(parent[node], depth - 1)
+                f = fact_of[node] = n
                 n += 1
-                self.node_pre.append((head, prefix[-1]))
+                self.node_pre.append((head, last[node]))
                 self.node_add.append((f,))
             return f
 
         fpre = []
-        for p in order:
-            k = len(p) - 1
-            while k >= 2 and passing.get(tuple(p[:k]), 0) < MIN_SHARE:
-                k -= 1
-            fpre.append([node(tuple(p[:k]))] + p[k:] if k >= 2 else p)
+        for p, path in zip(order, paths):
+            k = 1
+            while k + 1 < len(path) and passing[path[k + 1]] >= MIN_SHARE:
+                k += 1     # passing only falls with depth: the deepest shared node
+            fpre.append([conjunction(path[k], k)] + p[k:] if k >= 2 else p)
         self.n_all = n
         self.pre = fpre + [list(x) for x in self.node_pre]
         self.add = list(add) + self.node_add
