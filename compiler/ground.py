@@ -196,6 +196,8 @@ class Grounder:
             return ClassName(name)
         known = list(ctx.env) + list(self.sizes) + list(self.dom.constants) + list(self.d.objects) + \
             [v for e in enums.values() for v in e.values] + list(self.dom.classes)
+        if name.lower() in ("true", "false"):   # Python's spelling
+            raise ctx.error(node, f"unknown name {name!r} (did you mean '{name.lower()}'?)")
         raise ctx.error(node, f"unknown name {name!r}{suggest(name, known)}")
 
     def x_Attr(self, node, ctx, hint):

@@ -9,6 +9,7 @@ balanced trees, and any other nesting deeper than `MAX_EXPRESSION_DEPTH` is bad 
 """
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 
 from lark import Lark, Token, Tree
@@ -317,8 +318,37 @@ def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:
                            len(lines), len(lines[-1]) + 1)
     if isinstance(exc, UnexpectedToken):
         tok: Token = exc.token
-        return where.error(f"syntax error: unexpected {str(tok)!r}{want}", tok.line, tok.column)
+        before = re.search(r"([A-Za-z]+)\s*$", text[:tok.start_pos]) if tok.start_pos is not None else None
+        if before and _foreign_spelling(before.group(1)):   # `NOT x`: the word before was read as a name
+            word = before.group(1)
+            line = text.count("\n", 0, before.start(1)) + 1
+            col = before.start(1) - (text.rfind("\n", 0, before.start(1)) + 1) + 1
+            return where.error(f"syntax error: unexpected {word!r}{_foreign_spelling(word)}", line, col)
+        hint = _foreign_spelling(str(tok), tok.type)
+        return where.error(f"syntax error: unexpected {str(tok)!r}{hint or want}", tok.line, tok.column)
     if isinstance(exc, UnexpectedCharacters):
-        return where.error(f"syntax error: unexpected character {text[exc.pos_in_stream]!r}{want}",
+        found = text[exc.pos_in_stream:exc.pos_in_stream + 2]
+        found = found if found in ("&&", "||") else found[:1]
+        hint = _foreign_spelling(found + ("=" if text[exc.pos_in_stream + 1:exc.pos_in_stream + 2] == "=" else ""))
+        return where.error(f"syntax error: unexpected character{'s' if len(found) > 1 else ''} {found!r}{hint or want}",
                            exc.line, exc.column)
     return where.error(f"syntax error: {exc}")
+
+
+# What people bring from other languages, and bcc's spelling of it.
+_OPERATOR_WORDS = {"&&": "and", "&": "and", "||": "or", "|": "or", "!": "not"}
+_QUOTES = set("'\"\u2018\u2019\u201c\u201d`")
+
+
+def _foreign_spelling(found: str, kind: str = "") -> str:
+    """A hint for a spelling from another language (`&&`, `!`, `AND`, quotes, `=` in a
+    condition), or "" (the parser's list of what it expected is then the message)."""
+    if found in _OPERATOR_WORDS:
+        return f"; bcc writes `{_OPERATOR_WORDS[found]}` (its logical operators are the words and, or, not)"
+    if found.lower() in ("and", "or", "not") and found != found.lower():
+        return f"; keywords are lowercase: write `{found.lower()}`"
+    if found[:1] in _QUOTES:
+        return "; names are written without quotes, e.g. agentInRoom(agent, red)"
+    if found == "=" and kind != "CMP_OP":
+        return "; compare with `==` (a single `=` assigns, in effects)"
+    return ""

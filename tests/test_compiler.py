@@ -136,3 +136,10 @@ goal: atGoal(agent)
     result = get_solver("astar")(m, Budget())
     # Five cells to go: 5 steps cost 5; any jump costs 3 for 2 cells, so steps are optimal.
     assert result.cost == 5 and result.plan == ["step"] * 5
+
+
+@pytest.mark.parametrize("goal", ["True", "not False", "FALSE"])
+def test_pythons_true_and_false_are_pointed_at_bccs(goal):
+    from bcc.errors import BccError
+    with pytest.raises(BccError, match=r"unknown name '(True|False|FALSE)' \(did you mean '(true|false)'\?\)"):
+        compile_dungeon("grid", goal=goal)

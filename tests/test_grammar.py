@@ -403,6 +403,36 @@ def test_syntax_error_messages_say_what_was_expected(text, needles):
     assert "\n" not in str(e)
 
 
+# Spellings from other languages get bcc's spelling, at the character that needs it.
+FOREIGN = [
+    ("p && q", (1, 3), "bcc writes `and`"),
+    ("p & q", (1, 3), "bcc writes `and`"),
+    ("p || q", (1, 3), "bcc writes `or`"),
+    ("p | q", (1, 3), "bcc writes `or`"),
+    ("!p", (1, 1), "bcc writes `not`"),
+    ("p and !q", (1, 7), "bcc writes `not`"),
+    ("p AND q", (1, 3), "keywords are lowercase: write `and`"),
+    ("p Or q", (1, 3), "keywords are lowercase: write `or`"),
+    ("NOT p", (1, 1), "keywords are lowercase: write `not`"),
+    ("p and\n  Not q", (2, 3), "keywords are lowercase: write `not`"),
+    ("f(a, 'red')", (1, 6), "names are written without quotes"),
+    ('f(a, "red")', (1, 6), "names are written without quotes"),
+    ("f(a, \u201cred\u201d)", (1, 6), "names are written without quotes"),
+    ("a.x = 3", (1, 5), "compare with `==`"),
+]
+
+
+@pytest.mark.parametrize("text,where,hint", FOREIGN)
+def test_spellings_from_other_languages_get_a_hint(text, where, hint):
+    e = err(text)
+    assert (e.line, e.col) == where and hint in e.message, e.message
+
+
+def test_a_not_equal_is_not_taken_for_a_foreign_not():
+    assert parse_expression("a != b", HERE) is not None
+    assert "bcc writes" not in err("a != != b").message
+
+
 BAD_EFFECTS = [
     ("a.x = ", ["ends too early"]),
     ("a.x == 1", ["'=='", "'='"]),
