@@ -331,3 +331,15 @@ def test_incremental_exploration_matches_a_fresh_one(tmp_path):
             slow, _, _ = view.explore(facts, view.cost, True, True)
             assert view.goal_cost(fast, True) == view.goal_cost(slow, True)
             assert all(fast[g] == slow[g] for g in view.goal)
+
+
+def test_a_build_stopped_by_its_time_limit_is_not_cached(tmp_path, monkeypatch):
+    """The view's time limit stops its build (None: search without it); nothing is kept
+    for the next solve, and a later call with time builds the view and keeps it."""
+    monkeypatch.setenv("BCC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.delenv("BCC_NO_CACHE", raising=False)
+    model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
+    assert model.data("relaxed_task", time_limit=1e-9) is None
+    assert not list((tmp_path / "cache").glob("relaxed/*.pickle"))
+    assert model.data("relaxed_task") is not None
+    assert len(list((tmp_path / "cache").glob("relaxed/*.pickle"))) == 1
