@@ -238,6 +238,9 @@ class Model:
         """What `bcc compile --json` (and the server's /compile) print: the compile report,
         the action names, and bytes per state measured on the first states reached."""
         report = dict(self.report, action_names=list(self.action_names))
+        skips = self.data("layer_skips")
+        if skips is not None:
+            report["layered_search"] = skips   # what breadth-first and blind search skip (compiler/inverses.py)
         if isinstance(report.get("state_bytes"), dict):
             report["state_bytes"] = {**report["state_bytes"], **self.state_sizes()}
         return report

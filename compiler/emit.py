@@ -696,26 +696,30 @@ class Emitter:
             lambda s: [(a, n) for a, n in successors(s) if n != s and (not fails(n) or goal(n))]
         ns["_fresh_slow"] = functools.partial(fresh_from, live_slow)
         if self.compact:
-            from .inverses import find_inverses
-            undo = find_inverses(actions, search, self.L, [ns[f"apply_{i}"] for i in range(len(actions))])
-            ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
             # compiled on first use: only breadth-first and blind searches run them
-            ns["_build_layers"] = functools.partial(self.layer_functions, actions, goal_ir, failure, search, ns,
-                                                    undo)
+            ns["_build_layers"] = functools.partial(self.layer_functions, actions, goal_ir, failure, search, ns)
         return ns, source
 
-    def layer_functions(self, actions: list[GroundAction], goal, failure, search: list[int], ns: dict,
-                        undo: dict) -> tuple:
+    def layer_functions(self, actions: list[GroundAction], goal, failure, search: list[int], ns: dict) -> tuple:
         """The layer expanders (`layer_source`), compiled into `ns`: group 0 for the start
-        and states made by actions nothing undoes, then one per action that some action
-        undoes (`undo`, from inverses.py), at most MAX_GROUPS. Their source is kept in
-        `ns["_layers_source"]`."""
+        and states made by actions after which nothing is skipped, then one per action
+        after which some are (inverses.py: its inverses, and the earlier actions it
+        commutes with), at most MAX_GROUPS. Their source is kept in `ns["_layers_source"]`,
+        the inverses and the skips by action index in `ns["_undo"]` and `ns["_skips"]`."""
+        from .inverses import find_inverses, find_skips
+        apply_fns = [ns[f"apply_{i}"] for i in range(len(actions))]
+        reads, complex_failure = _var_reads(failure)
+        failure_reads = None if complex_failure else {self.L.by_var[v].index for v in reads}
+        undo = find_inverses(actions, search, self.L, apply_fns)
+        skips = find_skips(actions, search, self.L, apply_fns, failure_reads, undo)
+        ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
+        ns["_skips"] = {a: tuple(sorted(b)) for a, b in skips.items()}
         # each group is a copy of every action's code: a few, and not for thousands of actions
         most = min(MAX_GROUPS, max(0, MAX_INLINED // max(1, len(search)) - 1))
-        makers = [i for i in search if i in undo][:most]
+        makers = [i for i in search if i in skips][:most]
         group_of = {a: g for g, a in enumerate(makers, 1)}
         parts = [self.layer_source(f"layer_{g}", actions, search, goal, failure, group_of,
-                                   undo[makers[g - 1]] if g else frozenset())
+                                   skips[makers[g - 1]] if g else frozenset())
                  for g in range(len(makers) + 1)]
         source = "\n\n".join(parts)
         for name, value in self.ns.items():   # tables the new code made

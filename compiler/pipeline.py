@@ -93,6 +93,15 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         return cached_analysis("patterns", key, lambda: patterns.build(layout, actions, search, goal_ir, reach,
                                                                        n_values, position_vars, initial))
 
+    layer_expanders = functools.lru_cache(maxsize=1)(ns["_build_layers"])
+
+    def layer_skips() -> dict:
+        """What a layered search skips (compiler/inverses.py), by action name:
+        {"undone_by": {a: [b]}, "skipped_after": {a: [b]}}."""
+        layer_expanders()
+        names = lambda d: {actions[a].name: [actions[b].name for b in bs] for a, bs in d.items()}
+        return {"undone_by": names(ns["_undo"]), "skipped_after": names(ns["_skips"])}
+
     built: dict = {}
 
     def relaxed_task(time_limit: float | None = None):
@@ -124,8 +133,6 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         "grounded_actions": len(actions),
         "never_applicable": [actions[i].name for i in range(len(actions)) if i not in reach.applicable],
         "pruned_from_search": [actions[i].name for i in range(len(actions)) if i not in search],
-        # b undoes a: b(a(s)) == s wherever a changes s (compiler/inverses.py); blind search skips it
-        "undone_by": {actions[a].name: [actions[b].name for b in undo] for a, undo in ns["_undo"].items()},
         "state_variables": len(layout.slots),
         "mutable_cells": len(layout.layers) * dungeon.width * dungeon.depth,
         "mutable_layers": list(layout.layers),
@@ -149,8 +156,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         report=report, source=source, display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"pattern_database": pattern_database,
                                                     "relaxed_task": relaxed_task,
-                                                    "layer_expanders": functools.lru_cache(maxsize=1)(
-                                                        ns["_build_layers"]),
+                                                    "layer_expanders": layer_expanders,
+                                                    "layer_skips": layer_skips,
                                                     "dense_functions": dense_functions})
 
 

@@ -1,14 +1,16 @@
-"""The layered search's pieces: which actions undo which (compiler/inverses.py), proven
-against brute force; the generated layer expanders (`Model.search_layers`) against
-`fresh`; and plans and costs of the searches that use them against independent ones."""
+"""The layered search's pieces: which actions undo which and which commute
+(compiler/inverses.py), checked against brute force; the generated layer expanders
+(`Model.search_layers`) against `fresh`; every layer they reach against a search that
+skips nothing; and plans and costs against independent solvers."""
 import dataclasses
+import functools
 from collections import deque
 
 import pytest
 
 from bcc.compiler import compile_dungeon
 from bcc.compiler.dungeon import shipped_dungeons
-from bcc.compiler.inverses import undoes
+from bcc.compiler.inverses import commute, undoes
 from bcc.solvers import Budget, get_solver
 
 
@@ -24,9 +26,17 @@ def reachable(model, limit=3000):
     return list(seen)
 
 
-def undone_by(model) -> dict:
+def by_index(model, key: str) -> dict:
     names = model.action_names
-    return {names.index(a): [names.index(b) for b in bs] for a, bs in model.report["undone_by"].items()}
+    return {names.index(a): [names.index(b) for b in bs] for a, bs in model.data("layer_skips")[key].items()}
+
+
+def undone_by(model) -> dict:
+    return by_index(model, "undone_by")
+
+
+def skipped_after(model) -> dict:
+    return by_index(model, "skipped_after")
 
 
 @pytest.mark.parametrize("name", shipped_dungeons())
@@ -45,14 +55,38 @@ def test_every_inverse_found_undoes_its_action_on_every_reachable_state(name):
     assert checked or not undo
 
 
-def test_the_minecraft_turns_and_looks_are_found_and_nothing_else():
+@pytest.mark.parametrize("name", shipped_dungeons())
+def test_every_commuting_pair_found_commutes_on_every_reachable_state(name):
+    """b is skipped after a, other than as a's inverse, only where a then b and b then a
+    apply alike with the same result; and b comes first in the action order."""
+    model = compile_dungeon(name, prune=False)
+    undo, skips = undone_by(model), skipped_after(model)
+    pairs = [(a, b) for a, bs in skips.items() for b in bs if b not in undo.get(a, ())]
+    assert all(b < a for a, b in pairs)
+    apply = model.apply
+    for s in reachable(model):
+        for a, b in pairs:
+            ta, tb = apply(a, s), apply(b, s)
+            assert (None if ta is None else apply(b, ta)) == (None if tb is None else apply(a, tb)), \
+                (model.action_names[a], model.action_names[b])
+
+
+def test_the_minecraft_turns_looks_and_item_changes():
     # By hand: rotate_left sets d = (d + 3) % 4 and rotate_right d = (d + 1) % 4, each the
     # other's inverse on all 4 facings; look_down sets looking = 1, look_ahead 0, so where
     # one changes the state the other puts it back. change_item (+1 mod 9) is undone by
-    # no single action; move_forward, destroy_block, place_block read cells.
+    # no single action. Turning, looking and changing the item touch different variables
+    # with no preconditions, so they commute; each is skipped after the later ones.
+    # move_forward, destroy_block, place_block read cells: never skipped.
     model = compile_dungeon("tough_maze")
-    assert model.report["undone_by"] == {"rotate_left": ["rotate_right"], "rotate_right": ["rotate_left"],
-                                         "look_down": ["look_ahead"], "look_ahead": ["look_down"]}
+    assert model.data("layer_skips") == {
+        "undone_by": {"rotate_left": ["rotate_right"], "rotate_right": ["rotate_left"],
+                      "look_down": ["look_ahead"], "look_ahead": ["look_down"]},
+        "skipped_after": {"rotate_left": ["rotate_right"], "rotate_right": ["rotate_left"],
+                          "look_down": ["rotate_left", "rotate_right", "look_ahead"],
+                          "look_ahead": ["rotate_left", "rotate_right", "look_down"],
+                          "change_item": ["rotate_left", "rotate_right", "look_down", "look_ahead"]}}
+    assert model.compile_report()["layered_search"] == model.data("layer_skips")
 
 
 def test_undoes_tries_every_value_where_the_action_changes_the_state():
@@ -66,6 +100,17 @@ def test_undoes_tries_every_value_where_the_action_changes_the_state():
     keep = lambda s: s
     assert not undoes(keep, keep, [(0, 3)], 1)        # never changes anything: nothing proven
     assert not undoes(lambda s: bytes([1]), lambda s: bytes([0]), [(0, 2)], 1)   # 2 -> 1 -> 0
+
+
+def test_commute_needs_both_orders_to_apply_alike():
+    inc = lambda s: bytes([s[0] + 1, s[1]]) if s[0] < 3 else None
+    dec = lambda s: bytes([s[0] - 1, s[1]]) if s[0] > 0 else None
+    flip = lambda s: bytes([s[0], 1 - s[1]])
+    slots = [(0, 3), (1, 1)]
+    assert commute(inc, flip, slots, 2) and commute(flip, dec, slots, 2)
+    assert not commute(inc, dec, slots, 2)    # at 0: inc then dec works, dec then inc does not
+    gated = lambda s: bytes([s[0], 1]) if s[0] == 0 else None    # applies only at 0
+    assert not commute(inc, gated, slots, 2)  # at 0: gated then inc works, inc then gated does not
 
 
 LINE_DOMAIN = """\
@@ -127,9 +172,16 @@ def test_inverses_in_a_domain_of_its_own(tmp_path):
     # switch toggles the lamp: its own inverse. unturn undoes turn except from 3 (turn
     # gives 0, where unturn does not apply), so it is not an inverse of turn; turn undoes
     # unturn (d - 1 then + 1, d > 0).
+    # Commuting (skipped after the later action): switch, turn and unturn with right and
+    # left (different variables, preconditions on their own); turn and unturn with switch.
+    # right/left do not commute (from 0 only right then left applies), nor turn/unturn.
     model = lamps(tmp_path)
-    assert model.report["undone_by"] == {"right": ["left"], "left": ["right"], "switch": ["switch"],
-                                         "unturn": ["turn"]}
+    assert model.data("layer_skips") == {
+        "undone_by": {"right": ["left"], "left": ["right"], "switch": ["switch"], "unturn": ["turn"]},
+        "skipped_after": {"right": ["left"], "left": ["right"], "switch": ["right", "left", "switch"],
+                          "turn": ["right", "left", "switch"], "unturn": ["right", "left", "switch", "turn"]}}
+    assert layers_reached(model, model.search_layers()) == \
+        layers_reached(model, unskipped(model).search_layers())
     # By hand: 4 steps right, 1 switch, 2 turns (or... unturn from 0 does not apply): 7.
     for solver, options in [("bfs", {}), ("astar", {"heuristic": "blind"})]:
         result = get_solver(solver)(model, Budget(), **options)
@@ -168,14 +220,15 @@ def expands_as_fresh(model, expander, groups: int, s, seen: dict) -> None:
 
 
 @pytest.mark.parametrize("name", shipped_dungeons())
-def test_layer_expanders_are_fresh_less_the_undoing_actions(name):
-    """Group 0 expands as `fresh` does; a state made by an action with inverses, with its
-    parent seen, yields the same new states as `fresh` (the skipped ones are that parent)."""
+def test_layer_expanders_are_fresh_less_the_skipped_actions(name):
+    """Group 0 expands as `fresh` does. A state t made by action a (its parent seen)
+    yields `live`'s next states of every action but those skipped after a, once each,
+    with t as their parent; an inverse's next state would have been the parent."""
     model = compile_dungeon(name)
-    expanders = model.search_layers()
+    expanders, live = model.search_layers(), model.search_successors()
     assert expanders is model.data("layer_expanders")   # generated, not the fallback
-    undo = undone_by(model)
-    makers = [a for a in model.search_actions if a in undo]
+    skips, undo = skipped_after(model), undone_by(model)
+    makers = [a for a in model.search_actions if a in skips]
     assert len(expanders) == 1 + len(makers)
     states = [s for s in reachable(model, 600) if not model.is_goal(s)]
     skipped = 0
@@ -188,9 +241,51 @@ def test_layer_expanders_are_fresh_less_the_undoing_actions(name):
             t = model.apply(a, s)
             if t is None or t == s or model.is_goal(t) or model.is_failure(t):
                 continue
-            k, count = expands_as_fresh(model, expanders[g], len(expanders), t, {s: None, t: s})
-            skipped += k >= 0 and count - k
+            nexts = live(t)
+            assert all(n == s for b, n in nexts if b in undo.get(a, ()))
+            kept = [n for b, n in nexts if b not in skips[a]]
+            expected = list(dict.fromkeys(n for n in kept if n not in (s, t)))
+            outs = [[] for _ in expanders]
+            seen = {s: None, t: s}
+            got = expanders[g]([t], seen, outs)
+            new = [n for out in outs for n in out]
+            if any(map(model.is_goal, expected)):
+                assert got < 0 and set(new) <= set(expected)
+            else:
+                assert got == len(kept) and sorted(new) == sorted(expected)
+                assert seen == {s: None, t: s, **dict.fromkeys(expected, t)}
+            skipped += len(nexts) - len(kept)
     assert skipped or not makers
+
+
+def unskipped(model):
+    """The model with no generated expanders: one group over `fresh`, nothing skipped."""
+    return dataclasses.replace(model, lazy={k: v for k, v in model.lazy.items() if k != "layer_expanders"})
+
+
+def layers_reached(model, expanders, limit=20000) -> list:
+    """The sets of states of each layer a layered search completes, up to the layer where
+    it meets a goal or passes `limit` states."""
+    seen, layer, done = {model.initial: None}, [[model.initial]] + [[] for _ in expanders[1:]], []
+    while any(layer) and len(seen) < limit:
+        below = [[] for _ in expanders]
+        for expand, states in zip(expanders, layer):
+            if expand(states, seen, below) < 0:
+                return done
+        layer = below
+        done.append(frozenset(s for out in below for s in out))
+    return done
+
+
+@pytest.mark.parametrize("name", shipped_dungeons())
+def test_skipping_reaches_every_state_of_every_layer(name):
+    """Layer by layer, the search that skips inverses and commuting actions holds exactly
+    the states of one that skips nothing (so the first goal is met at the same depth)."""
+    model = compile_dungeon(name)
+    skipping = layers_reached(model, model.search_layers())
+    assert skipping == layers_reached(model, unskipped(model).search_layers())
+    if name in ("tough_maze", "bridge", "manipulation", "cleanup"):   # goals far enough to compare many layers
+        assert len(skipping) >= 5
 
 
 @pytest.mark.parametrize("name", ["bridge", "easy_maze", "four_rooms", "grid"])
@@ -199,7 +294,7 @@ def test_layered_searches_find_bfs_costs_with_and_without_generated_expanders(na
     fallback (`fresh` only), agree on the cost with an A* that keeps a priority queue
     (the pattern database, consistent), and every plan replays to a goal."""
     model = compile_dungeon(name)
-    plain = dataclasses.replace(model, lazy={k: v for k, v in model.lazy.items() if k != "layer_expanders"})
+    plain = unskipped(model)
     assert plain.search_layers() != model.search_layers()
     reference = get_solver("astar")(model, Budget(), heuristic="pdb")
     assert reference.solved
