@@ -195,9 +195,10 @@ class Model:
     def search_layers(self) -> tuple:
         """Expanders for a layered search (breadth-first, blind with equal costs): group
         g's `expand(states, seen, outs) -> generated` runs `search_fresh` over states all
-        made by one action (group 0: the start, and states made by actions nothing
-        undoes), leaving out the actions that undo it, whose next states are known
-        already. Each new next state goes to `outs[h]`, h the group of the action that
+        made by one action (group 0: the start, and states made by actions after which
+        nothing is skipped), leaving out the actions whose next states are duplicates
+        made elsewhere (compiler/inverses.py: that action's inverses, and the earlier
+        actions it commutes with). Each new next state goes to `outs[h]`, h the group of the action that
         made it. When a new one is a goal, it returns at once the count's complement (a
         negative number), the goal being the last of its group's list. The states handed
         in must not be goals. Generated with the model where it can be (compiled on first

@@ -7,7 +7,9 @@ model's generated expanders (`Model.search_layers`), which test new states for t
 as they make them (a goal one layer down is a cheapest one, as Fast Downward's blind
 heuristic, 0 only on goals, pops a generated goal next: mystery p02 has millions of
 states a layer). New states are kept per group of the action that made them, so the
-next layer skips the actions that undo it. A run is as long as the expansions between
+next layer skips what would only be duplicates: that action's inverses, and the earlier
+actions it commutes with (compiler/inverses.py: why every layer still holds every
+state of its depth). A run is as long as the expansions between
 budget checks (`Meter.mask`), and short enough that a state budget is not overshot by
 more than one expansion's next states.
 """
