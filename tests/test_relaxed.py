@@ -286,7 +286,7 @@ def test_the_relaxed_view_is_built_once_and_cached(tmp_path, monkeypatch):
     calls = []
     build = relaxed.build
     monkeypatch.setattr(relaxed, "build", lambda *a, **k: calls.append(1) or build(*a, **k))
-    path = _write(tmp_path, "rooms2", generate_manipulation(2))
+    path = _write(tmp_path, "tiny", TINY_ROOMS)
 
     def view(task):
         return (task.n_facts, task.pre, task.add, task.cost, task.action, task.goal,
@@ -316,7 +316,7 @@ def test_incremental_exploration_matches_a_fresh_one(tmp_path):
     rng = random.Random(7)
     states, frontier = [model.initial], [model.initial]
     seen = {model.initial}
-    while frontier and len(states) < 400:
+    while frontier and len(states) < 150:
         s = frontier.pop(rng.randrange(len(frontier)))
         for _, n in model.successors(s):
             if n not in seen and not model.is_failure(n):

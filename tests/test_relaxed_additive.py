@@ -50,7 +50,7 @@ def tasks(draw):
     return n, pre, add, costs, goal, states
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(tasks())
 def test_costs_equal_a_plain_fixpoint(task):
     """On every state of a sequence (the counters carried from one to the next), each goal
