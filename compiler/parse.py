@@ -27,6 +27,7 @@ _SPELLING = {
     "LPAR": "'('", "RPAR": "')'", "LSQB": "'['", "RSQB": "']'", "LBRACE": "'{'", "RBRACE": "'}'",
     "COMMA": "','", "DOT": "'.'", "COLON": "':'", "SEMICOLON": "';'", "EQUAL": "'='",
     "MINUS": "'-'", "CMP_OP": "a comparison", "ADD_OP": "'+' or '-'", "MUL_OP": "'*', '//' or '%'",
+    "AUG_OP": "'+=', '-=', '*=', '//=' or '%='",
     "NAME": "a name", "INT": "a number", "$END": "the end of the text", "_IN": "'in' or ':'",
 }
 
@@ -119,6 +120,9 @@ class _ToAst:
 
     def assign(self, meta, target, value):
         return ast.Assign(target, value, _pos(meta))
+
+    def augassign(self, meta, target, op, value):
+        return ast.Assign(target, ast.BinOp(str(op)[:-1], target, value, _pos(op)), _pos(meta))
 
     def elif_(self, meta, cond, body):
         return (cond, body)
@@ -324,6 +328,9 @@ def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:
             line = text.count("\n", 0, before.start(1)) + 1
             col = before.start(1) - (text.rfind("\n", 0, before.start(1)) + 1) + 1
             return where.error(f"syntax error: unexpected {word!r}{_foreign_spelling(word)}", line, col)
+        found = text[tok.start_pos:tok.start_pos + 2] if tok.start_pos is not None else ""
+        if found in ("++", "--"):
+            return where.error(f"syntax error: unexpected {found!r}; write `{found[0]}= 1`", tok.line, tok.column)
         hint = _foreign_spelling(str(tok), tok.type)
         return where.error(f"syntax error: unexpected {str(tok)!r}{hint or want}", tok.line, tok.column)
     if isinstance(exc, UnexpectedCharacters):
