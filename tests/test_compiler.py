@@ -143,3 +143,18 @@ def test_pythons_true_and_false_are_pointed_at_bccs(goal):
     from bcc.errors import BccError
     with pytest.raises(BccError, match=r"unknown name '(True|False|FALSE)' \(did you mean '(true|false)'\?\)"):
         compile_dungeon("grid", goal=goal)
+
+
+def test_a_domain_written_with_augmented_assignment_compiles_to_the_same_code(tmp_path):
+    """`count -= 1` and `count += 1` are the long forms: the shipped minecraft domain with
+    its counter updates rewritten so generates the very same successor code."""
+    from bcc.compiler.domain import DOMAINS_DIR
+    from bcc.compiler.dungeon import DUNGEONS_DIR
+    text = (DOMAINS_DIR / "minecraft.yaml").read_text()
+    short = text.replace("inventoryBlock[a.selectedItem].count = inventoryBlock[a.selectedItem].count - 1",
+                         "inventoryBlock[a.selectedItem].count -= 1").replace("i.count = i.count + 1", "i.count += 1")
+    assert short.count("-= 1") == 1 and short.count("+= 1") == 1
+    (tmp_path / "short.yaml").write_text(short.replace("domain: minecraft", "domain: short", 1))
+    dungeon = (DUNGEONS_DIR / "bridge.yaml").read_text().replace("domain: minecraft", "domain: short.yaml", 1)
+    (tmp_path / "bridge.yaml").write_text(dungeon)
+    assert compile_dungeon(tmp_path / "bridge.yaml").source == compile_dungeon("bridge").source

@@ -433,13 +433,30 @@ def test_a_not_equal_is_not_taken_for_a_foreign_not():
     assert "bcc writes" not in err("a != != b").message
 
 
+@pytest.mark.parametrize("short,long", [
+    ("a.x += 1", "a.x = a.x + 1"),
+    ("a.x -= b.y * 2", "a.x = a.x - b.y * 2"),
+    ("inv[s].count *= 2; a.y //= 3; a.z %= 4", "inv[s].count = inv[s].count * 2; a.y = a.y // 3; a.z = a.z % 4"),
+    ("a.x += 1 + 2", "a.x = a.x + (1 + 2)"),   # the whole right-hand side, as in Python
+    ("if p { a.x = 1 } else if q { a.x = 2 } else { a.x = 3 }",
+     "if p { a.x = 1 } elif q { a.x = 2 } else { a.x = 3 }"),
+])
+def test_augmented_assignment_and_else_if_are_the_long_forms(short, long):
+    assert F(short) == F(long)
+
+
+@pytest.mark.parametrize("text,hint", [("a.x++", "write `+= 1`"), ("a.x--", "write `-= 1`")])
+def test_increments_point_at_augmented_assignment(text, hint):
+    e = err(text, effects=True)
+    assert (e.line, e.col) == (1, 4) and hint in e.message
+
+
 BAD_EFFECTS = [
     ("a.x = ", ["ends too early"]),
     ("a.x == 1", ["'=='", "'='"]),
     ("if p a.x = 1", ["'a'"]),
     ("if p { a.x = 1 } b.y = 2", ["'b'", "';'"]),
     ("if p { }", ["'}'"]),
-    ("if p { a.x = 1 } else if q { a.x = 2 }", ["'if'", "'{'"]),
     ("first i in C { i.x = 1 }", ["'{'", "'where'"]),
     ("forall i in C . i.x == 1", ["'.'"]),
     ("add block[1, 2, 3] {blockType t}", ["'t'", "'='"]),
