@@ -80,6 +80,43 @@ def test_any_text_is_read_or_refused_at_a_position(tmp_path, text):
         assert err.col is not None and 1 <= err.col <= len(lines[err.line - 1]) + 2 if err.line <= len(lines) else True
 
 
+def _shape(item):
+    """A read item with everything the front-end looks at: text, terminal and position."""
+    if isinstance(item, SList):
+        return ("list", item.line, item.column, [_shape(x) for x in item])
+    return (str(item), item.type, item.line, item.column)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet=" \n\t\x0b\xa0;()?:-_.=<>+*/aZ09é", max_size=60))
+def test_the_fast_reader_agrees_with_lark_on_any_text(text):
+    # read.py reads with a scanner made of the grammar's terminals and leaves what it
+    # cannot read to lark's parser of grammar/pddl.lark: both must see the same items at
+    # the same positions, and refuse the same texts (a refusal's message comes from lark).
+    from lark.exceptions import UnexpectedInput
+
+    from bcc.pddl_io.read import _parser, _scan
+    text = text.lower()
+    try:
+        theirs = [_shape(x) for x in _parser().parse(text)]
+    except UnexpectedInput:
+        theirs = None
+    ours = _scan(text)
+    assert (None if ours is None else [_shape(x) for x in ours]) == theirs
+
+
+def test_the_fast_reader_reads_the_grammars_terminals():
+    # "-5" is a NUMBER (priority 2 beats NAME's "-"), "<=" two NAMEs as lark's regex has it,
+    # a comment and whitespace are skipped, positions are 1-based.
+    from bcc.pddl_io.read import _scan
+    got = _scan("(a -5 <= ?x :k ; note\n  (b))")
+    assert [(str(x), x.type, x.line, x.column) for x in got[0][:6]] == [
+        ("a", "NAME", 1, 2), ("-5", "NUMBER", 1, 4), ("<", "NAME", 1, 7), ("=", "NAME", 1, 8),
+        ("?x", "VARIABLE", 1, 10), (":k", "KEYWORD", 1, 13)]
+    assert (got[0][6].line, got[0][6].column) == (2, 3)
+    assert _scan("(a") is None and _scan("a)") is None and _scan("a.b") is None
+
+
 @SETTINGS
 @given(st.data())
 def test_mutated_domains_import_or_give_one_error(tmp_path, data):
