@@ -116,25 +116,41 @@ def test_conditional_effects_read_the_state_before_the_action():
     assert "(at paper office)" in facts and "(at paper home)" not in facts and "(in paper)" in facts
 
 
-@pytest.mark.parametrize("problem", ["briefcase-1", "gripper-3", "road-1"])
-def test_generated_successors_agree_with_the_ground_task_interpreter(problem):
+@pytest.mark.parametrize("tree", ["by frequency", "by pruning"])
+@pytest.mark.parametrize("problem", ["briefcase-1", "gripper-3", "road-1", "logistics-2", "blocksworld-4"])
+def test_generated_successors_agree_with_the_ground_task_interpreter(problem, tree, monkeypatch):
     # The generated bit code (pddl_io/bits.py) against compile.action_functions, which
     # interprets the ground formulas one atom at a time: same successors in every
     # reachable state (conditional effects, negative preconditions and `or` included).
+    # Blind search's `fresh` is built from a sampled tree on big tasks: forced here.
+    from bcc.pddl_io import compile as pddl_compile
+    monkeypatch.setattr(pddl_compile, "SAMPLED_TREE_ACTIONS", 0 if tree == "by pruning" else 10 ** 9)
+    monkeypatch.setattr(pddl_compile, "SAMPLE_STATES", 5)     # a sample of a few states only
     model = load(problem)
     seen, todo = {model.initial}, [model.initial]
     while todo:
         s = todo.pop()
         expected = [(a, n) for a in range(len(model.action_names)) if (n := model.apply_fns[a](s)) is not None]
         assert sorted(model.successors(s)) == sorted(expected)
-        seen, out = {s: None}, []       # the fused duplicate check (Model.search_fresh)
-        assert model.search_fresh()(s, seen, out) == len(expected)
-        assert sorted(out) == sorted({n for _, n in expected} - {s}) and all(seen[n] == s for n in out)
+        parents, out = {s: None}, []       # the fused duplicate check (Model.search_fresh)
+        assert model.search_fresh()(s, parents, out) == len(expected)
+        assert sorted(out) == sorted({n for _, n in expected} - {s}) and all(parents[n] == s for n in out)
         for _, n in expected:
             if n not in seen:
                 seen.add(n)
                 todo.append(n)
     assert len(seen) >= 3
+
+
+def test_the_pruning_tree_tests_rarely_true_atoms_first():
+    # Atoms 0 and 1 are each needed by two of three actions; atom 0 holds in every sampled
+    # state and atom 1 in none: testing 1 first skips two actions at once, testing 0 none.
+    from bcc.pddl_io.bits import _tree_by_pruning, atom_shares
+    keys = [[0, 1], [0, 1], [2]]
+    shares = atom_shares([0b001, 0b101])
+    assert shares == {0: 1.0, 1: 0.0, 2: 0.5}
+    tree = _tree_by_pruning(keys, shares)
+    assert list(tree) == [1, 2] and tree[1] == {0: {None: [0, 1]}} and tree[2] == {None: [2]}
 
 
 def test_cli_import_solves_and_prints_pddl_actions():
