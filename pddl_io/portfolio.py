@@ -17,10 +17,13 @@ from __future__ import annotations
 
 import time
 
+from ..solvers.base import Result
+
 BLIND_SECONDS = 1.0
 BLIND_SHARE = 1 / 20
 LMCUT_SHARE = 1 / 6
 LMCUT_SECONDS = 10.0
+SLICE_WALL_FACTOR = 10   # a slice also ends after this many times its CPU seconds of wall-clock time
 
 
 def phases(limit: float | None) -> list[tuple[str, float | None]]:
@@ -31,8 +34,19 @@ def phases(limit: float | None) -> list[tuple[str, float | None]]:
             ("blind", None)]
 
 
+class _SliceOver(BaseException):
+    """A phase's CPU slice is spent (raised from the search's progress callback). A
+    BaseException, as the time-limit exceptions are: no `except Exception` may keep it."""
+
+
 def solve(model, budget, progress=None, **options):
+    """The slices count this process's CPU seconds (checked at the search's progress
+    reports, every half second or so): on a busy machine a wall-clock second of blind
+    search may be a fifth of a CPU second, and which phase solves a task would then
+    depend on the machine's load. A slice also ends after SLICE_WALL_FACTOR times its
+    length in wall-clock time; the time limit itself stays wall-clock time."""
     from ..solvers import Budget, get_solver
+    from ..solvers.base import Meter
     astar = get_solver("astar")
     start = time.perf_counter()
     limit = budget.time_limit
@@ -41,15 +55,30 @@ def solve(model, budget, progress=None, **options):
     results = []
     for k, (heuristic, seconds) in enumerate(plan):
         left = None if limit is None else max(limit - (time.perf_counter() - start), 1e-3)
-        share = left if seconds is None else seconds if left is None else min(seconds, left)
-        result = astar(model, Budget(budget.max_states, share, budget.max_memory_mb), progress, heuristic=heuristic)
+        cpu_start, seen = time.process_time(), {}
+
+        def watch(_slice=seconds, _cpu_start=cpu_start, _seen=seen, **counters):
+            _seen.update(counters)   # (counters has its own `seconds`: the search's wall time)
+            if _slice is not None and time.process_time() - _cpu_start > _slice:
+                raise _SliceOver
+            if progress is not None:
+                progress(**counters)
+        wall = left if seconds is None else SLICE_WALL_FACTOR * seconds if left is None \
+            else min(left, SLICE_WALL_FACTOR * seconds)
+        try:
+            result = astar(model, Budget(budget.max_states, wall, budget.max_memory_mb), watch, heuristic=heuristic)
+        except _SliceOver:
+            meter = Meter.latest
+            result = Result(solver="astar", solved=False, status="budget", budget="time_limit", heuristic=heuristic,
+                            expanded=seen.get("expanded", 0), generated=seen.get("generated", 0),
+                            stored=seen.get("stored", 0), peak_mb=round(meter.peak_mb, 1) if meter else 0.0)
         results.append(result)
         used.append(heuristic)
-        last = k == len(plan) - 1 or (left is not None and share >= left)
-        if result.solved or result.status != "budget" or last:
-            break      # solved, proved unsolvable, or the whole budget is spent
-        if result.budget != "time_limit" and heuristic != "blind":
-            break      # out of states or memory with LM-cut: blind search would store more
+        if result.solved or result.status != "budget" or k == len(plan) - 1 or result.budget != "time_limit" \
+                and heuristic != "blind":
+            break      # solved, proved unsolvable, last phase, or LM-cut out of states or memory
+        if limit is not None and time.perf_counter() - start >= limit:
+            break      # the whole time limit is spent
     if len(results) == 1:
         result.heuristic = f"auto ({heuristic})"
         return result
@@ -59,6 +88,6 @@ def solve(model, budget, progress=None, **options):
     result.seconds = round(time.perf_counter() - start, 6)
     result.peak_mb = max(r.peak_mb for r in results)
     result.heuristic = "auto (" + ", ".join(used[:-1]) + f", then {used[-1]})"
-    result.initial_h = max(r.initial_h for r in results if r.initial_h is not None) \
-        if any(r.initial_h is not None for r in results) else None
+    known = [r.initial_h for r in results if r.initial_h is not None]
+    result.initial_h = max(known) if known else None
     return result

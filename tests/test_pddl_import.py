@@ -354,6 +354,30 @@ def test_the_portfolio_counts_every_phase():
     assert both.expanded == alone.expanded + 1 and both.cost == alone.cost
 
 
+def test_a_portfolio_slice_ends_on_cpu_time_at_a_progress_report(monkeypatch):
+    # The slices count CPU seconds, checked when the search reports progress: a search
+    # whose slice is spent is stopped at its report (its counters kept), and the next
+    # phase runs. A stand-in for A* reports twice per call; the user's callback sees the
+    # reports of phases that go on.
+    from bcc.pddl_io import portfolio
+    from bcc.solvers.base import Result
+    calls, reports = [], []
+
+    def fake_astar(model, budget, progress, heuristic):
+        calls.append(heuristic)
+        for n in (5, 9):
+            progress(expanded=n, generated=2 * n, stored=n, seconds=0.5)
+        return Result(solver="astar", solved=True, status="solved", plan=["(x)"], cost=1, expanded=3, generated=4,
+                      stored=2, heuristic=heuristic, initial_h=1)
+
+    import bcc.solvers
+    monkeypatch.setattr(bcc.solvers, "get_solver", lambda name: fake_astar)
+    monkeypatch.setattr(portfolio, "BLIND_SECONDS", -1.0)      # spent at the first report
+    result = portfolio.solve(None, Budget(time_limit=600), progress=lambda **kw: reports.append(kw["expanded"]))
+    assert calls == ["blind", "lmcut"] and result.heuristic == "auto (blind, then lmcut)"
+    assert result.solved and result.expanded == 5 + 3 and result.generated == 10 + 4 and reports == [5, 9]
+
+
 def test_the_portfolio_slices_follow_the_time_limit():
     from bcc.pddl_io.portfolio import phases
     assert phases(None) == [("blind", 1.0), ("lmcut", 10.0), ("blind", None)]
