@@ -97,10 +97,17 @@ def timed(cmd: list, limit: float, cwd: str | None = None,
     import resource
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
+    # A session of its own: at the wall-clock cap the whole group is killed. Killing only
+    # the child left Fast Downward's search (a grandchild) running on, orphaned, for up to
+    # its CPU limit, beside the next runs.
+    child = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
+                             env=child_env(), preexec_fn=preexec, start_new_session=True)
     try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=WALL_FACTOR * limit + 15, cwd=cwd,
-                              env=child_env(), preexec_fn=preexec)
+        out, err = child.communicate(timeout=WALL_FACTOR * limit + 15)
+        proc = subprocess.CompletedProcess(cmd, child.returncode, out, err)
     except subprocess.TimeoutExpired:
+        os.killpg(child.pid, signal.SIGKILL)
+        child.communicate()
         proc = None
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
