@@ -76,11 +76,16 @@ def _tree_by_pruning(keys: list, prob: dict) -> dict:
 
 
 def atom_shares(states: list) -> dict:
-    """atom -> the share of `states` (ints) in which it holds."""
-    if not states:
-        return {}
-    width = max(s.bit_length() for s in states)
-    return {a: sum(s >> a & 1 for s in states) / len(states) for a in range(width)}
+    """atom -> the share of `states` (ints) in which it holds (atoms that never hold are
+    left out). Walks each state's set bits only: a state of thousands of atoms has few."""
+    count: dict = {}
+    for s in states:
+        while s:
+            low = s & -s
+            atom = low.bit_length() - 1
+            count[atom] = count.get(atom, 0) + 1
+            s ^= low
+    return {a: c / len(states) for a, c in count.items()}
 
 
 def _flatten(node) -> list:

@@ -148,7 +148,7 @@ def test_the_pruning_tree_tests_rarely_true_atoms_first():
     from bcc.pddl_io.bits import _tree_by_pruning, atom_shares
     keys = [[0, 1], [0, 1], [2]]
     shares = atom_shares([0b001, 0b101])
-    assert shares == {0: 1.0, 1: 0.0, 2: 0.5}
+    assert shares == {0: 1.0, 2: 0.5}      # atom 1 never holds
     tree = _tree_by_pruning(keys, shares)
     assert list(tree) == [1, 2] and tree[1] == {0: {None: [0, 1]}} and tree[2] == {None: [2]}
 
