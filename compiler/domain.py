@@ -168,7 +168,7 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
                        lambda section, name: _load_function(section, name, names_in_use), base)
     actions = _merge("action", data, "actions", base.actions if base else {},
                      lambda section, name: _load_action(section, name, names_in_use), base)
-    failure = _expr(data, "failure") if "failure" in data else (base.failure if base else None)
+    failure = _condition(data, "failure") if "failure" in data else (base.failure if base else None)
     binding = _merge_binding(data, base)
     start = _check_binding(data, binding, classes)
     _ident(data, "domain", data["domain"], "the domain name")
@@ -303,15 +303,65 @@ def _check_binding(data, b, classes) -> Expr | None:
 
 
 def _expr(container, key, effects: bool = False) -> Expr:
-    text = container[key]
+    text = _scalar_text(container, key)   # `pre: true` in YAML is a bool, not the text "true"
     where = origin(container, key)
-    if isinstance(text, bool):  # `pre: true` in YAML is a bool, not the text "true"
-        text = "true" if text else "false"
-    elif isinstance(text, int):
-        text = str(text)
     from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
     node = parse_effects(text, where) if effects else parse_expression(text, where)
     return Expr(node, where, text)
+
+
+def _condition(container, key) -> Expr:
+    """A condition (a goal, a failure) written as one expression or, as `pre` may be, as a
+    list of expressions that must all hold."""
+    if not isinstance(container[key], YList):
+        return _expr(container, key)
+    return _joined(container, key, " and ", effects=False)
+
+
+def _joined(container, key, separator: str, effects: bool) -> Expr:
+    """A YAML list of expressions (each in parentheses, for conditions) or of effects, parsed
+    as one text joined by `separator`, whose every character keeps its place in the file:
+    an error in the third item points into the third item."""
+    items = container[key]
+    if not items:
+        raise error_at(container, key, f"`{key}` is an empty list: leave the key out instead")
+    text, positions = "", []
+    for i in range(len(items)):
+        part = _scalar_text(items, i)
+        where = origin(items, i)
+        start = where.locate(1, 1)
+        if i:
+            text += separator
+            positions += [start] * len(separator)
+        opening, closing = ("", "") if effects else ("(", ")")
+        text += opening + part + closing
+        positions += [start] * len(opening)
+        line, col = 1, 1
+        for ch in part:
+            positions.append(where.locate(line, col))
+            line, col = (line + 1, 1) if ch == "\n" else (line, col + 1)
+        positions += [where.locate(line, col)] * len(closing)
+    first = origin(container, key)
+    combined = Origin(first.path, first.line, first.col, 1, tuple(positions), text)
+    from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
+    node = parse_effects(text, combined) if effects else parse_expression(text, combined)
+    return Expr(node, combined, text)
+
+
+def _scalar_text(container, key) -> str:
+    """An expression's text as YAML gave it (`pre: true` is a bool, `cost: 1` an int); a
+    list or a mapping where an expression belongs is bad input."""
+    value = container[key]
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if not isinstance(value, str):
+        kind = ("a list" if isinstance(value, YList) else "a mapping" if isinstance(value, YMap)
+                else "nothing" if value is None else f"the number {value!r}" if isinstance(value, float)
+                else f"a {type(value).__name__}")
+        raise error_at(container, key, f"expected an expression as text, found {kind}")
+    return value
 
 
 def _ident(container, key, value, what: str) -> str:
@@ -506,8 +556,7 @@ def _load_action(section, name, known_types) -> ActionDef:
         pres = [_expr(adef, "pre")]
     effect = adef["effect"]
     if isinstance(effect, YList):  # a list of effects is the same as joining them with `;`
-        effects = tuple(e for i in range(len(effect)) for e in _expr(effect, i, effects=True).node)
-        eff = Expr(effects, origin(adef, "effect"), "; ".join(map(str, effect)))
+        eff = _joined(adef, "effect", ";\n", effects=True)
     else:
         eff = _expr(adef, "effect", effects=True)
     cost = adef.get("cost", 1)

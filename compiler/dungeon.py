@@ -11,7 +11,7 @@ from pathlib import Path
 
 
 from ..errors import BccError
-from .domain import Domain, Expr, _expr, is_file, load_domain, resolve_domain_path
+from .domain import Domain, Expr, _condition, is_file, load_domain, resolve_domain_path
 from .limits import MAX_GRID_CELLS, MAX_REF_LENGTH, shorten
 from .names import check_name, check_text, name_from_stem
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest
@@ -168,7 +168,7 @@ class _Builder:
         self.inventory(dungeon)
         self.rooms(dungeon)
         if "goal" in data:
-            dungeon.goal = _expr(data, "goal")
+            dungeon.goal = _condition(data, "goal")
         return dungeon
 
     def legend(self) -> dict[str, list[int]]:

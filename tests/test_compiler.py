@@ -158,3 +158,50 @@ def test_a_domain_written_with_augmented_assignment_compiles_to_the_same_code(tm
     dungeon = (DUNGEONS_DIR / "bridge.yaml").read_text().replace("domain: minecraft", "domain: short.yaml", 1)
     (tmp_path / "bridge.yaml").write_text(dungeon)
     assert compile_dungeon(tmp_path / "bridge.yaml").source == compile_dungeon("bridge").source
+
+
+def _bridge_with(tmp_path, goal_yaml: str, domain_text: str | None = None) -> Path:
+    from bcc.compiler.dungeon import DUNGEONS_DIR
+    text = re.sub(r"^goal: .*\n", goal_yaml, (DUNGEONS_DIR / "bridge.yaml").read_text(), flags=re.M)
+    if domain_text is not None:
+        (tmp_path / "dom.yaml").write_text(domain_text)
+        text = text.replace("domain: minecraft", "domain: dom.yaml", 1)
+    path = tmp_path / "b.yaml"
+    path.write_text(text)
+    return path
+
+
+def test_a_goal_written_as_a_list_is_their_conjunction(tmp_path):
+    listed = _bridge_with(tmp_path, "goal:\n  - agentOnBlock(agent, gold)\n  - not agentHasBlock(agent, gold)\n")
+    one = compile_dungeon("bridge", goal="agentOnBlock(agent, gold) and not agentHasBlock(agent, gold)")
+    assert compile_dungeon(listed).source == one.source
+
+
+@pytest.mark.parametrize("goal_yaml,where,says", [
+    ("goal:\n  - agentOnBlock(agent, gold)\n  - agentHasBlok(agent, gold)\n", (29, 5), "unknown function 'agentHasBlok'"),
+    ("goal:\n  - true\n  - >-\n    agentOnBlock(agent,\n    gold) and\n    agentOnBlok(agent, gold)\n", (32, 5),
+     "unknown function 'agentOnBlok'"),
+    ("goal:\n  - agentOnBlock(agent, gold)\n  - [a, b]\n", (29, 5), "expected an expression as text, found a list"),
+    ("goal: []\n", (27, 7), "`goal` is an empty list"),
+    ("goal: 1.5\n", (27, 7), "found the number 1.5"),
+])
+def test_an_error_in_a_listed_goal_points_into_its_item(tmp_path, goal_yaml, where, says):
+    from bcc.errors import BccError
+    with pytest.raises(BccError) as caught:
+        compile_dungeon(_bridge_with(tmp_path, goal_yaml))
+    assert (caught.value.line, caught.value.col) == where and says in caught.value.message, str(caught.value)
+
+
+def test_an_error_in_a_listed_effect_points_into_its_item(tmp_path):
+    """An effect written as a list is parsed as one text whose characters keep their file
+    positions (before, an error in the second item pointed at the first item's line)."""
+    from bcc.compiler.domain import DOMAINS_DIR
+    from bcc.errors import BccError
+    listed = (DOMAINS_DIR / "minecraft.yaml").read_text().replace(
+        "    effect: |\n      a.x = tx; a.z = tz;\n", "    effect:\n      - a.x = tx\n      - a.z = tzz\n      - ", 1)
+    assert "- a.z = tzz" in listed
+    path = _bridge_with(tmp_path, "goal: agentOnBlock(agent, gold)\n", listed.replace("domain: minecraft", "domain: d", 1))
+    line = listed.splitlines().index("      - a.z = tzz") + 1
+    with pytest.raises(BccError, match="unknown name 'tzz'") as caught:
+        compile_dungeon(path)
+    assert (caught.value.path, caught.value.line, caught.value.col) == (str(tmp_path / "dom.yaml"), line, 15)
