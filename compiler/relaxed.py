@@ -52,6 +52,7 @@ class RelaxedTask:
     reader: "StateReader"
     stats: dict = field(default_factory=dict)
     guide: "RelaxedTask | None" = None   # the goal reached by a last action (relaxed_last.py), for hadd/hff
+    chained: tuple = ()              # fired facts whose steps cost their action here (Builder.fire_effects)
 
     def state_facts(self, state) -> list:
         return self.reader.facts(state)
@@ -644,7 +645,8 @@ def build(layout, actions, search, goal, reach, n_values, initial, time_limit: f
         guide_ops = _prune([(o[0], o[1], steps.get(o, o[2]), o[3]) for o in all_ops] + last[0],
                            init_facts, last[1], b.n_facts)
         task.guide = RelaxedTask(b.n_facts, [o[0] for o in guide_ops], [o[1] for o in guide_ops],
-                                 [o[2] for o in guide_ops], [o[3] for o in guide_ops], last[1], labels, reader)
+                                 [o[2] for o in guide_ops], [o[3] for o in guide_ops], last[1], labels, reader,
+                                 chained=tuple(sorted(b.chained)))
     task.stats = {"facts": b.n_facts, "operators_built": built, "operators": len(ops),
                   "groups": [[v.label for v in g] for g in b.groups],
                   "seconds": round(time.perf_counter() - start, 3)}

@@ -47,6 +47,22 @@ class Relaxed:
                 self.achievers[f].append(i)
         self.preferred: frozenset = frozenset()
         self.additive = None   # explore_add's structure, built on its first call
+        # The guiding view's steps of a count (relaxed.py, fire_effects) each cost their
+        # action; an action's own operator in a relaxed plan is one execution of it, and
+        # makes one of those steps: hff charges only the steps beyond those (_step_savings).
+        chained = set(getattr(task, "chained", ()))
+        self.step_of = {}    # step operator -> the fired fact it steps
+        self.pays = {}       # operator of an action, costing > 0 -> the chained fired facts it adds
+        if chained:
+            for i, (pre, add, c, a) in enumerate(zip(self.pre, self.add, self.cost, self.action)):
+                if a < 0 and c > 0:
+                    fired = [p for p in pre if p in chained]
+                    if len(fired) == 1:
+                        self.step_of[i] = fired[0]
+                elif a >= 0 and c > 0:
+                    fired = [g for g in add if g in chained]
+                    if fired:
+                        self.pays[i] = fired
         # hadd and hff ask `guide`, the view whose goal is reached by a last action
         # (compiler/relaxed_last.py), when there is one; a state where the goal holds needs
         # no last action, so there `holds` (the model's goal test) answers 0.
@@ -180,7 +196,23 @@ class Relaxed:
             if all(cost[p] == 0 for p in self.pre[i]):
                 preferred.update(self._actions_of(i, cost))
         self.preferred = frozenset(preferred)
-        return sum(self.cost[i] for i in plan)
+        h = sum(self.cost[i] for i in plan)
+        return h - self._step_savings(plan) if self.step_of else h
+
+    def _step_savings(self, plan) -> float:
+        """What the plan's steps cost that its own action operators already paid: each
+        plan operator of an action that fires a count's steps makes one step (the
+        cheapest ones are counted as paid). Without this, putting one thing down cost
+        two (the action and its step), and holding k things k + 1."""
+        paid: dict = {}
+        steps: dict = {}
+        for i in plan:
+            fired = self.step_of.get(i)
+            if fired is not None:
+                steps.setdefault(fired, []).append(self.cost[i])
+            for f in self.pays.get(i, ()):
+                paid[f] = paid.get(f, 0) + 1
+        return sum(sum(sorted(costs)[:paid[f]]) for f, costs in steps.items() if f in paid)
 
     def _actions_of(self, i, cost):
         """The grounded actions behind operator i (an auxiliary one stands for the actions

@@ -199,11 +199,15 @@ def test_last_step_view_sees_the_carry(tmp_path):
 def test_guiding_view_counts_each_thing_put_down(tmp_path):
     """A count that an action moves by one (stones in hand) walks through its values in
     the relaxed view by fired steps; in the guiding view each step costs the action, and
-    the last placing needs a hand holding one stone (the slot empties only then). With two
-    stones in hand hff therefore counts both placings: along BFS's plan (every suffix of an
-    optimal plan is optimal, so the steps left are the exact cost to go) it is exact from
-    the doorway on, and never more than one short once both stones are held. The plain
-    view saw one placing, and LM-cut, admissible, stays below the exact cost."""
+    the last placing needs a hand holding one stone (the slot empties only then). An
+    action's own operator in the relaxed plan makes one of its steps (it is charged once,
+    not once more for the step), so k stones in hand cost k placings. Along BFS's plan
+    (every suffix of an optimal plan is optimal, so the steps left are the exact cost to
+    go), with two stones in hand hff is therefore never more than two short (it counts
+    both placings, not the turn between them: without deletes the relaxed plan puts both
+    in the same free cell, and the walk shares moves), where steps costing nothing (one
+    placing seen) leave it three short after the second stone is mined; from the doorway
+    on it is at most one short. LM-cut, admissible, stays below the exact cost."""
     text = TINY_ROOMS.replace("r.M.b..b", "rMM.b..b")
     model = compile_dungeon(_write(tmp_path, "two", text))
     r = relaxed_of(model)
@@ -216,9 +220,10 @@ def test_guiding_view_counts_each_thing_put_down(tmp_path):
         left = len(plan) - i - 1
         assert r.lmcut(state) <= left
         if mined == 2 and "place_block" not in plan[:i + 1]:
-            assert left - 1 <= r.hff(state) <= left, (name, r.hff(state), left)
+            assert left - 2 <= r.hff(state) <= left, (name, r.hff(state), left)
         if i >= plan.index("change_item"):
-            assert r.hff(state) == left, (name, r.hff(state), left)
+            assert left - 1 <= r.hff(state) <= left, (name, r.hff(state), left)
+    assert r.hff(state) == 0
 
 
 def test_gbfs_auto_picks_hff_where_the_pattern_database_is_blind(tmp_path):
