@@ -28,18 +28,20 @@ def budget_options(command):
 
 
 @contextlib.contextmanager
-def within_budget(time_limit: float | None, max_memory: float | None, as_json: bool, where: str):
-    """Run a command's work under --time-limit and --max-memory (default: half the RAM).
-    A budget that runs out ends the command the way a solve's does: one line
-    `where: stopped: ... ran out` on stderr (with --json also one object on stdout,
-    status "budget"), exit 1. Files are written atomically, so none is left half written."""
+def within_budget(time_limit: float | None, max_memory: float | None, as_json: bool, where: str,
+                  grace: float | None = 0.0):
+    """Run a command's work under --time-limit and --max-memory (default: half the RAM);
+    yields the Budget. A budget that runs out ends the command the way a solve's does: one
+    line `where: stopped: ... ran out` on stderr (with --json also one object on stdout,
+    status "budget"), exit 1. Files are written atomically, so none is left half written.
+    `grace` (None: hard_limits' own) lets a search inside stop itself first, with its result."""
     from .solvers import Budget
     from .solvers.base import BUDGET_WORDS
     from .solvers.limits import BudgetExceeded, hard_limits
     budget = Budget(time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else Budget.default().max_memory_mb)
     try:
-        with hard_limits(budget, grace=0.0):   # nothing inside checks the budget itself: stop at the limit
+        with hard_limits(budget, grace=grace):   # by default nothing inside checks the budget: stop at the limit
             yield budget
     except BudgetExceeded as exc:
         message = f"stopped: {BUDGET_WORDS[exc.which]} ran out"

@@ -10,8 +10,8 @@ import sys
 
 import click
 
-from ..cli_shared import (budget_options, compile_model, emit_json, json_option, print_result, time_limit_option,
-                          within_budget)
+from ..cli_shared import (budget_options, compile_model, emit_json, json_option, max_memory_option, print_result,
+                          time_limit_option, within_budget)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -152,26 +152,30 @@ def _translation(db, model_path):
 @click.argument("text", metavar="TEXT")
 @db_option
 @click.option("--model", "model_path", type=click.Path(dir_okay=False), help="Use this model file (from `bcc train -o`).")
-@time_limit_option("Planner time limit.", default=60, show_default=True)
+@time_limit_option("Stop after this many seconds (compiling, interpreting and planning together).",
+                   default=60, show_default=True)
+@max_memory_option()
 @json_option
-def command_cmd(dungeon, text, db, model_path, time_limit, as_json):
+def command_cmd(dungeon, text, db, model_path, time_limit, max_memory, as_json):
     """Interpret a natural-language command in DUNGEON and plan it.
 
-    Exit 0 when the chosen task is solved; 1 when no task is plausible or it has no plan."""
-    from ..solvers import Budget
+    Exit 0 when the chosen task is solved; 1 when no task is plausible, it has no plan or
+    a budget ran out."""
+    from ..solvers.limits import Deadline
     from .interpret import plan, rank
     from .learn import space_for
     if not text.strip():
         raise BccError("the command is empty")
-    model = compile_model(dungeon, None)
-    translation, source = _translation(db, model_path)
-    space = space_for(dungeon)
-    found = rank(translation, space, model.initial, text)
-    if found.task is not None:
-        found.result = plan(dungeon, found.task, None, Budget(time_limit=time_limit,
-                                                             max_memory_mb=Budget.default().max_memory_mb))
-        if not found.result.solved:
-            found.message = f"no plan for {found.task}: {found.result.message}"
+    with within_budget(time_limit, max_memory, as_json, dungeon, grace=None) as budget:
+        deadline = Deadline(budget)
+        model = compile_model(dungeon, None)
+        translation, source = _translation(db, model_path)   # may train a model: counted too
+        space = space_for(dungeon)
+        found = rank(translation, space, model.initial, text)
+        if found.task is not None:
+            found.result = plan(dungeon, found.task, None, deadline.remaining())
+            if not found.result.solved:
+                found.message = f"no plan for {found.task}: {found.result.message}"
     ok = found.result is not None and found.result.solved
     if as_json:
         emit_json({"dungeon": model.name, **found.to_json(), "model": source})
