@@ -7,7 +7,8 @@ An entry is found by the hash of bcc's version (a fingerprint of its code), Pyth
 version, the dungeon's path and its bytes; it lists every file the load read (dungeon, `extends` chain, domains) with its
 SHA-256, and is used only if all of them still hash the same. Entries live in the user's
 own cache folder (`$XDG_CACHE_HOME/bcc`, else `~/.cache/bcc`; `BCC_CACHE_DIR` overrides,
-`BCC_NO_CACHE=1` turns the cache off), are written atomically, and are read with an
+`BCC_NO_CACHE=1` turns the cache off), which is kept under 1 GB (`BCC_CACHE_MAX_MB`) by
+deleting the least recently used entries; they are written atomically, and are read with an
 unpickler that builds only bcc's own data classes and plain containers: a tampered
 entry can fail to load (then it is ignored and rebuilt), but it cannot run code.
 """
@@ -19,10 +20,16 @@ import hashlib
 import io
 import os
 import pickle
+import re
 import sys
 from pathlib import Path
 
 FORMAT = 1
+MAX_MB = 1024          # the cache folder's size at most (BCC_CACHE_MAX_MB): least recently used entries go first
+_TRIM_TO = 0.8         # a trim leaves this share of the limit, so the next writes do not trim again at once
+_STALE_TMP_SECONDS = 3600   # a temporary file this old was left by a writer that was killed
+_ENTRY_NAME = re.compile(r"[0-9a-f]{40}\.pickle")
+_TMP_NAME = re.compile(r"\.[0-9a-f]{40}\.pickle\.[0-9]+\.tmp")
 _RECORDING: list | None = None   # while a load runs: the files it read
 
 
@@ -133,6 +140,10 @@ def _read(entry: Path):
         return None
     if not isinstance(record, dict) or record.get("version") != _version() or not _fresh(record.get("files", ())):
         return None
+    try:
+        os.utime(entry)   # used now: the trim keeps recently used entries
+    except OSError:
+        pass
     return record.get("value")
 
 
@@ -148,6 +159,57 @@ def _write(entry: Path, record: dict) -> None:
         try:
             tmp.unlink()
         except Exception:  # noqa: BLE001
+            pass
+        return
+    trim(entry.parent.parent, keep=entry)
+
+
+def max_bytes() -> int:
+    try:
+        mb = float(os.environ.get("BCC_CACHE_MAX_MB", MAX_MB))
+    except ValueError:
+        mb = MAX_MB
+    return int(max(mb, 0) * 1024 * 1024)
+
+
+def trim(folder: Path, keep: Path | None = None) -> None:
+    """Keep the cache folder under `max_bytes()`: entries of other bcc versions are never
+    read again and a batch of big mazes writes many, so after a write the least recently
+    used entries (by modification time, which a read refreshes) are deleted until the
+    folder is at most 80 % of the limit; `keep` (the entry just written) stays. Temporary
+    files of killed writers go once they are an hour old. Races with other processes are
+    harmless: a deleted entry is a miss and is rebuilt."""
+    import time
+    limit = max_bytes()
+    entries, total, now = [], 0, time.time()
+    try:
+        for path in folder.glob("*/*"):   # only bcc's own names: BCC_CACHE_DIR may hold other files
+            entry, tmp = _ENTRY_NAME.fullmatch(path.name), _TMP_NAME.fullmatch(path.name)
+            if not (entry or tmp):
+                continue
+            try:
+                st = path.lstat()
+            except OSError:
+                continue
+            if tmp:
+                if now - st.st_mtime > _STALE_TMP_SECONDS:
+                    path.unlink(missing_ok=True)
+                continue
+            entries.append((st.st_mtime, st.st_size, path))
+            total += st.st_size
+    except OSError:
+        return
+    if total <= limit:
+        return
+    for _, size, path in sorted(entries, key=lambda e: e[0]):
+        if total <= limit * _TRIM_TO:
+            break
+        if keep is not None and path == keep:
+            continue
+        try:
+            path.unlink()
+            total -= size
+        except OSError:
             pass
 
 

@@ -120,3 +120,38 @@ def test_the_pattern_database_is_built_once_per_model(cache_dir, monkeypatch):
     assert len(calls) == 2 and other != first
     monkeypatch.setenv("BCC_NO_CACHE", "1")
     assert compile_dungeon("tough_maze").data("pattern_database") == first and len(calls) == 3
+
+
+def _analysis_files(folder):
+    return sorted((folder / "bench").glob("*.pickle"))
+
+
+def test_the_cache_stays_under_its_size_limit_least_recently_used_first(cache_dir, monkeypatch):
+    """Entries of old bcc versions are never read again and big mazes write big entries:
+    past BCC_CACHE_MAX_MB the least recently used entries go, and a read counts as a use."""
+    monkeypatch.setenv("BCC_CACHE_MAX_MB", str(350_000 / 1024 / 1024))   # room for three 100 kB entries
+    blob = lambda k: bytes([k]) * 100_000                                 # noqa: E731
+    for k in range(3):
+        cache.cached_analysis("bench", bytes([k]), lambda k=k: blob(k))
+    which = {cache._read(p)[0]: p for p in _analysis_files(cache_dir)}   # first byte -> entry file
+    assert sorted(which) == [0, 1, 2]
+    for k, path in which.items():
+        os.utime(path, (k + 1, k + 1))                  # written long ago, 0 first
+    assert cache.cached_analysis("bench", bytes([0]), lambda: None) == blob(0)   # a read: 0 is recent again
+    cache.cached_analysis("bench", bytes([3]), lambda: blob(3))                  # a fourth: over the limit
+    left = sorted(cache._read(p)[0] for p in _analysis_files(cache_dir))
+    assert left == [0, 3]                               # 1 and 2 were the least recently used
+    assert sum(p.stat().st_size for p in _analysis_files(cache_dir)) <= cache.max_bytes()
+
+
+def test_a_trim_touches_only_bccs_own_files(cache_dir, monkeypatch):
+    monkeypatch.setenv("BCC_CACHE_MAX_MB", "0")
+    (cache_dir / "notes").mkdir(parents=True)
+    mine = cache_dir / "notes" / "results.pickle"
+    mine.write_bytes(b"x" * 1000)
+    stale_tmp = cache_dir / "notes" / f".{'a' * 40}.pickle.123.tmp"
+    stale_tmp.write_bytes(b"")
+    os.utime(stale_tmp, (1, 1))
+    cache.cached_analysis("bench", b"k", lambda: b"y" * 1000)
+    assert mine.exists() and not stale_tmp.exists()
+    assert len(_analysis_files(cache_dir)) == 1    # the entry just written stays, even over the limit
