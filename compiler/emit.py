@@ -711,7 +711,9 @@ class Emitter:
         reads, complex_failure = _var_reads(failure)
         failure_reads = None if complex_failure else {self.L.by_var[v].index for v in reads}
         undo = find_inverses(actions, search, self.L, apply_fns)
-        skips = find_skips(actions, search, self.L, apply_fns, failure_reads, undo)
+        reads, complex_goal = _fixed_reads(goal, self.L)
+        goal_reads = None if complex_goal else {self.L.by_var[v].index for v in reads}
+        skips = find_skips(actions, search, self.L, apply_fns, failure_reads, undo, goal_reads)
         ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
         ns["_skips"] = {a: tuple(sorted(b)) for a, b in skips.items()}
         # each group is a copy of every action's code: a few, and not for thousands of actions

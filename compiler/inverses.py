@@ -12,14 +12,16 @@ build from a state t, knowing the action a that first made t from its parent p.
   c and comes before it; following that chain the skipped action's index grows, so it
   ends in a state that is built, no deeper than t's layer. Every state of a layer is
   therefore reached by the end of the layer before it, as without skipping, and the first
-  goal is still found at its cheapest depth. A state that fails is never expanded, so
-  only actions that do not write what the failure test reads take part (a failing b(p)
-  would make b(t) fail too).
+  goal is still found at its cheapest depth. A state that fails is never expanded: b is
+  skipped after a only if b(p) cannot fail (b writes nothing the failure test reads) or
+  a(b(p)) must fail and be no goal with it (a writes nothing the failure test or the goal
+  reads).
 
-Proven, not guessed: a pair is only considered when both actions write fixed variables
-only and read nothing but fixed variables (no cell, no keyed attribute); their outcome
-then depends on those few bytes alone, and every combination of their values is tried
-through the compiled `apply` functions.
+Proven, not guessed: two actions commute when neither writes anything the other reads
+or writes (the grid counted as one thing: moving reads cells, looking down does not
+touch them), or, when both touch fixed variables only (no cell, no keyed attribute),
+by trying every combination of those bytes' values through the compiled `apply`
+functions; inverses are found the second way only.
 """
 from __future__ import annotations
 
@@ -115,30 +117,97 @@ def commute(apply_a, apply_b, slots: list, size: int) -> bool:
     return True
 
 
+CELLS = "cells"   # the grid as one resource: an action reading any cell, one writing any
+
+
+def _uses(node, out: set) -> bool:
+    """Add what `node` reads to `out`: state indices of variables, CELLS for any cell;
+    False for a keyed attribute (its index is chosen at run time and may alias a
+    variable)."""
+    if isinstance(node, ir.VarAt):
+        return False
+    if isinstance(node, (ir.Cell, ir.CellLoop)):
+        out.add(CELLS)
+    if isinstance(node, ir.Var):
+        out.add(node.var)
+    return all(_uses(child, out) for child in ir.children(node))
+
+
+def _effect_uses(effects, writes: set, reads: set) -> bool:
+    for e in effects:
+        if isinstance(e, ir.When):
+            if not (_uses(e.cond, reads) and _effect_uses(e.then, writes, reads)
+                    and _effect_uses(e.orelse, writes, reads)):
+                return False
+        elif isinstance(e, ir.SetVar):
+            writes.add(e.var)
+            if not _uses(e.value, reads):
+                return False
+        elif isinstance(e, ir.SetCell):
+            writes.add(CELLS)
+            if not all(_uses(part, reads) for part in (e.x, e.y, e.z, e.value)):
+                return False
+        else:
+            return False
+    return True
+
+
+def resources(action, layout) -> tuple[frozenset, frozenset] | None:
+    """(written, read) of a ground action: state indices, and CELLS for the grid; None
+    when it touches a keyed attribute."""
+    writes: set = set()
+    reads: set = set()
+    if not all(_uses(value, reads) for _, value in action.lets):
+        return None
+    if not all(_uses(cond, reads) for cond in action.pre):
+        return None
+    if not _effect_uses(action.effects, writes, reads):
+        return None
+    if any(v != CELLS and v not in layout.by_var for v in writes | reads):
+        return None
+    index = lambda vs: frozenset(v if v == CELLS else layout.by_var[v].index for v in vs)
+    return index(writes), index(reads)
+
+
 def find_skips(actions: list, search: list, layout, apply_fns, failure_reads: set | None,
-               undo: dict | None = None) -> dict:
+               undo: dict | None = None, goal_reads: set | None = None) -> dict:
     """{action a: frozenset of the search actions a layered search skips in states a made}:
-    a's inverses, and the actions before a in `search`'s order that commute with it when
-    neither writes a variable the failure test reads (`failure_reads`: their state
-    indices; None when the failure test reads more than variables: no commuting pair).
+    a's inverses, and each action b before a in `search`'s order that commutes with it:
+    proven by trying every value of what they touch (both touch fixed variables only),
+    or because neither writes anything the other reads or writes.
+    `failure_reads` and `goal_reads`: the state indices the failure test and the goal
+    read (None when they read more than variables and fixed cells). With a failure
+    test that reads more, no pair is skipped. Where b writes what the failure test reads,
+    b(p) may fail and never be expanded; a(b(p)) then fails and is no goal as well when
+    a writes nothing either test reads, so only then is b skipped after a.
     `undo`: `find_inverses`'s answer, if already known."""
     if undo is None:
         undo = find_inverses(actions, search, layout, apply_fns)
-    prints = {i: footprint(actions[i], layout) for i in search}
-    span = {s.index: s.hi - s.lo for s in layout.slots}
     out = {a: set(bs) for a, bs in undo.items()}
-    if failure_reads is not None:
-        free = [i for i in search if prints[i] is not None and not prints[i][0] & failure_reads]
-        free = free[:MAX_COMMUTING]   # pairs grow as the square
-        for k, a in enumerate(free):
-            for b in free[:k]:
+    if failure_reads is None:
+        return {a: frozenset(bs) for a, bs in out.items()}
+    prints = {i: footprint(actions[i], layout) for i in search}
+    uses = {i: resources(actions[i], layout) for i in search}
+    span = {s.index: s.hi - s.lo for s in layout.slots}
+    tests = None if goal_reads is None else failure_reads | goal_reads
+    candidates = [i for i in search if uses[i] is not None][:MAX_COMMUTING]   # pairs grow as the square
+    for k, a in enumerate(candidates):
+        wa, ra = uses[a]
+        for b in candidates[:k]:
+            wb, rb = uses[b]
+            if wb & failure_reads and (tests is None or wa & tests):
+                continue
+            if wa & (wb | rb) or wb & ra:   # they interfere: only an exhaustive trial proves it
+                if prints[a] is None or prints[b] is None:
+                    continue
                 touched = sorted(prints[a][0] | prints[a][1] | prints[b][0] | prints[b][1])
                 combos = 1
                 for i in touched:
                     combos *= span[i] + 1
-                if combos <= MAX_COMBINATIONS and commute(apply_fns[a], apply_fns[b],
-                                                          [(i, span[i]) for i in touched], layout.grid_base):
-                    out.setdefault(a, set()).add(b)
+                if combos > MAX_COMBINATIONS or not commute(apply_fns[a], apply_fns[b],
+                                                            [(i, span[i]) for i in touched], layout.grid_base):
+                    continue
+            out.setdefault(a, set()).add(b)
     return {a: frozenset(bs) for a, bs in out.items()}
 
 

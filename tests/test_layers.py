@@ -77,15 +77,20 @@ def test_the_minecraft_turns_looks_and_item_changes():
     # one changes the state the other puts it back. change_item (+1 mod 9) is undone by
     # no single action. Turning, looking and changing the item touch different variables
     # with no preconditions, so they commute; each is skipped after the later ones.
-    # move_forward, destroy_block, place_block read cells: never skipped.
+    # move_forward reads the facing and cells and writes the position and `alive`, which
+    # the failure test reads; looking and changing the item touch none of these, and
+    # write nothing the failure test or the goal (the position) reads: it is skipped
+    # after them. destroy_block and place_block read the selected slot by its index (a
+    # keyed attribute): never skipped.
     model = compile_dungeon("tough_maze")
     assert model.data("layer_skips") == {
         "undone_by": {"rotate_left": ["rotate_right"], "rotate_right": ["rotate_left"],
                       "look_down": ["look_ahead"], "look_ahead": ["look_down"]},
         "skipped_after": {"rotate_left": ["rotate_right"], "rotate_right": ["rotate_left"],
-                          "look_down": ["rotate_left", "rotate_right", "look_ahead"],
-                          "look_ahead": ["rotate_left", "rotate_right", "look_down"],
-                          "change_item": ["rotate_left", "rotate_right", "look_down", "look_ahead"]}}
+                          "look_down": ["move_forward", "rotate_left", "rotate_right", "look_ahead"],
+                          "look_ahead": ["move_forward", "rotate_left", "rotate_right", "look_down"],
+                          "change_item": ["move_forward", "rotate_left", "rotate_right", "look_down",
+                                          "look_ahead"]}}
     assert model.compile_report()["layered_search"] == model.data("layer_skips")
 
 
