@@ -29,6 +29,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from timed_env import timed_env   # bench/ is on sys.path when a script here runs
+
 HERE = Path(__file__).resolve().parent
 REFERENCE = ["bridge", "easy_maze", "tough_maze", "four_rooms"]
 # (width, stones, seed): 11-65 wide, 0-12 stones
@@ -101,14 +103,6 @@ def peak_of(cmd: list, env: dict | None = None, timeout: float = 600, cwd: Path 
             "code": proc.returncode, "peak_mb": round(usage.ru_maxrss / 1024, 1),
             "stdout": b"".join(out_chunks).decode(errors="replace"),
             "stderr": b"".join(err_chunks).decode(errors="replace")}
-
-
-def timed_env() -> dict:
-    """The environment of a timed process: bytecode may be cached, as an installed bcc (and
-    Fast Downward's translator) would have it, so no run pays for compiling Python."""
-    env = dict(os.environ)
-    env.pop("PYTHONDONTWRITEBYTECODE", None)
-    return env
 
 
 def fd_driver() -> Path | None:

@@ -20,13 +20,14 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import resource
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
+
+from timed_env import timed_env   # bench/ is on sys.path when a script here runs
 
 HERE = Path(__file__).resolve().parent
 CONFIGS = [("astar", "blind"), ("astar", "auto"), ("astar", "hmax"), ("astar", "lmcut"),
@@ -39,9 +40,7 @@ def run(dungeon: str, solver: str, heuristic: str, time_limit: float, cache: boo
            "--time-limit", str(time_limit)]
     start = time.perf_counter()
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    env = dict(os.environ) if cache else dict(os.environ, BCC_NO_CACHE="1")
-    # A user's bcc imports from .pyc files; without them each run compiles bcc's source (~0.2 s).
-    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    env = timed_env() if cache else timed_env(BCC_NO_CACHE="1")
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit + 60, env=env)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     wall = time.perf_counter() - start
