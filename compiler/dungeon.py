@@ -180,7 +180,8 @@ class _Builder:
             if not isinstance(ch, str) or len(ch) != 1 or not ch.isprintable():
                 raise error_at(legend, ch, f"a legend key is one printable character, found {ch!r}", on_key=True)
             if not isinstance(column, YList):
-                raise error_at(legend, ch, "a legend entry is a list of block names from y = 0 up, e.g. [stone, stone]")
+                example = ", ".join(self.venum.values[-1:] * 2)   # a name of this domain's blocks
+                raise error_at(legend, ch, f"a legend entry is a list of block names from y = 0 up, e.g. [{example}]")
             out[ch] = []
             for i, name in enumerate(column):
                 if name not in self.venum.values:

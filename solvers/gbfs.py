@@ -4,8 +4,8 @@ With a heuristic that names *preferred actions* (`hff`: the first steps of its r
 plan), successors reached by them also go to a second open list, and the search
 alternates between the two, giving the preferred list BOOST extra turns each time h
 improves (Fast Downward's dual queue with boosting; its 1,000 turns sent the search down
-long plateaus of preferred states on the manipulation dungeons: 6,615 expansions at 8
-stones against 917 with 10, and the same on the reference dungeons). Preferred actions only change the
+long plateaus of preferred states on the manipulation dungeons: 6,615 expansions on the
+largest against 917 with 10, and the same on the reference dungeons). Preferred actions only change the
 order of expansion, never which states can be reached, so completeness is kept.
 
 Evaluation is *lazy* (deferred, as in Fast Downward's lazy search) for the heuristics of
