@@ -27,7 +27,20 @@ from .exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO
 
 
 class BccGroup(click.Group):
-    """Prints a BccError once, as `file:line:col: message`, and exits 2."""
+    """Prints a BccError once, as `file:line:col: message`, and exits 2. The feature
+    commands' modules are imported when a command not yet known is asked for (or all of
+    them are listed): `bcc import pddl` need not import the Minecraft, batch, serve and
+    grounding commands (about 8 ms of a 0.12 s run)."""
+
+    def get_command(self, ctx, cmd_name):
+        while cmd_name not in self.commands and _load_feature_commands():
+            pass
+        return super().get_command(ctx, cmd_name)
+
+    def list_commands(self, ctx):
+        while _load_feature_commands():
+            pass
+        return super().list_commands(ctx)
 
     def invoke(self, ctx):
         try:
@@ -344,15 +357,15 @@ def learn_curve_cmd(dungeon, learners, solvers, episodes, n_seeds, seed, workers
 
 # Feature commands live beside their code (pddl_io/, grounding/, serve/, batch/, minecraft/);
 # each exposes `COMMANDS`, a list of click commands, and imports its heavy dependencies lazily.
-def _add_feature_commands() -> None:
-    from .batch import commands as batch_commands
-    from .grounding import commands as grounding_commands
-    from .minecraft import commands as minecraft_commands
-    from .pddl_io import commands as pddl_commands
-    from .serve import commands as serve_commands
-    for module in (pddl_commands, grounding_commands, serve_commands, batch_commands, minecraft_commands):
-        for command in module.COMMANDS:
-            main.add_command(command)
+FEATURE_MODULES = ["pddl_io", "grounding", "serve", "batch", "minecraft"]
 
 
-_add_feature_commands()
+def _load_feature_commands() -> bool:
+    """Add the next feature module's commands to `main`; False when all are added."""
+    if not FEATURE_MODULES:
+        return False
+    import importlib
+    module = importlib.import_module(f".{FEATURE_MODULES.pop(0)}.commands", __package__)
+    for command in module.COMMANDS:
+        main.add_command(command)
+    return True

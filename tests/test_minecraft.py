@@ -293,5 +293,5 @@ def test_run_takes_the_solver_options_and_checks_them_before_starting(model_of):
     bad = CliRunner().invoke(main, ["minecraft", "run", "bridge", "--heuristic", "nope"])
     assert bad.exit_code == 2 and "--heuristic must be one of" in bad.output
     # the run's own --max-steps (actions in the world) is one option, not a solver flag's duplicate
-    params = [p for p in main.commands["minecraft"].commands["run"].params if "--max-steps" in p.opts]
+    params = [p for p in main.get_command(None, "minecraft").commands["run"].params if "--max-steps" in p.opts]
     assert len(params) == 1
