@@ -398,7 +398,7 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
                 raise error_at(props, p, f"type {tname!r} already has the property {p!r}", on_key=True)
             if isinstance(d, YMap):  # {type: other_enum, default: value}
                 check_keys(d, {"type", "default"}, {"type", "default"}, f"property {p!r}")
-                if d["type"] not in enums:
+                if not isinstance(d["type"], str) or d["type"] not in enums:
                     raise error_at(d, "type", f"unknown type {d['type']!r}{suggest(str(d['type']), enums)}")
                 enum.prop_types[p] = d["type"]
                 defaults[p] = d["default"]

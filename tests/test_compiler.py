@@ -212,3 +212,20 @@ def test_an_error_in_a_listed_effect_points_into_its_item(tmp_path):
     with pytest.raises(BccError, match="unknown name 'tzz'") as caught:
         compile_dungeon(path)
     assert (caught.value.path, caught.value.line, caught.value.col) == (str(tmp_path / "dom.yaml"), line, 15)
+
+
+@pytest.mark.parametrize("written", ["[blocktype]", "{a: 1}", "3"])
+def test_a_property_type_that_is_not_a_name_is_bad_input(tmp_path, written):
+    """Found by fuzzing: `food: {type: [blocktype], ...}` raised TypeError (a list is not
+    hashable) instead of naming the line."""
+    from bcc.compiler.domain import DOMAINS_DIR
+    from bcc.compiler.dungeon import DUNGEONS_DIR
+    from bcc.errors import BccError
+    text = (DOMAINS_DIR / "farm.yaml").read_text()
+    assert "food: {type: blocktype, default: wheat}" in text
+    (tmp_path / "farm.yaml").write_text(text.replace("food: {type: blocktype,", f"food: {{type: {written},", 1))
+    (tmp_path / "barnyard.yaml").write_text((DUNGEONS_DIR / "barnyard.yaml").read_text().replace(
+        "domain: farm", "domain: farm.yaml", 1))
+    with pytest.raises(BccError, match="unknown type") as caught:
+        compile_dungeon(tmp_path / "barnyard.yaml")
+    assert caught.value.path.endswith("farm.yaml") and caught.value.line is not None
