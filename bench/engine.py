@@ -29,9 +29,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from timed_env import timed_env   # bench/ is on sys.path when a script here runs
-
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))   # also when a test loads this file by its path
+from timed_env import timed_env  # noqa: E402
 REFERENCE = ["bridge", "easy_maze", "tough_maze", "four_rooms"]
 # (width, stones, seed): 11-65 wide, 0-12 stones
 GENERATED = [(11, 0, 1), (11, 4, 2), (15, 2, 3), (21, 0, 4), (21, 6, 1), (31, 2, 5), (41, 4, 6), (51, 12, 1),

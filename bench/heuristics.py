@@ -27,9 +27,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from timed_env import timed_env   # bench/ is on sys.path when a script here runs
-
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))   # also when a test loads this file by its path
+from timed_env import timed_env  # noqa: E402
 CONFIGS = [("astar", "blind"), ("astar", "auto"), ("astar", "hmax"), ("astar", "lmcut"),
            ("gbfs", "hff"), ("gbfs", "hadd"), ("gbfs", "pdb"), ("wastar", "hff")]
 REFERENCE = ["grid", "bridge", "easy_maze", "tough_maze", "four_rooms"]

@@ -43,6 +43,8 @@ import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))   # also when a test loads this file by its path
+from timed_env import timed_env  # noqa: E402
 MANIFEST = HERE / "planning_manifest.txt"
 FD_CONFIGS = {"fd-blind": "astar(blind())", "fd-lmcut": "astar(lmcut())", "fd-ff": "lazy_greedy([ff()])"}
 BCC_CONFIGS = {"bcc-astar": ["--solver", "astar"], "bcc-blind": ["--solver", "astar", "--heuristic", "blind"],
@@ -66,15 +68,6 @@ def read_manifest(path: Path) -> list[dict]:
         out.append({"repo": repo, "domain_path": dom, "problem_path": prob,
                     "name": "/".join(filter(None, (Path(dom).parent.name, Path(prob).stem)))})
     return out
-
-
-def child_env() -> dict:
-    """The environment of the timed processes: Python may cache bytecode, as it does for
-    an installed bcc (pip compiles it) and for Fast Downward's translator in site-packages;
-    with PYTHONDONTWRITEBYTECODE set, every bcc process would recompile its modules."""
-    env = dict(os.environ)
-    env.pop("PYTHONDONTWRITEBYTECODE", None)
-    return env
 
 
 CPU: dict = {}   # the CPU seconds (user + system, children included) of the last timed() run
@@ -101,7 +94,7 @@ def timed(cmd: list, limit: float, cwd: str | None = None,
     # the child left Fast Downward's search (a grandchild) running on, orphaned, for up to
     # its CPU limit, beside the next runs.
     child = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
-                             env=child_env(), preexec_fn=preexec, start_new_session=True)
+                             env=timed_env(), preexec_fn=preexec, start_new_session=True)
     try:
         out, err = child.communicate(timeout=WALL_FACTOR * limit + 15)
         proc = subprocess.CompletedProcess(cmd, child.returncode, out, err)
