@@ -341,10 +341,13 @@ def _joined(container, key, separator: str, effects: bool) -> Expr:
             positions.append(where.locate(line, col))
             line, col = (line + 1, 1) if ch == "\n" else (line, col + 1)
         positions += [where.locate(line, col)] * len(closing)
+    from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
+    parse = parse_effects if effects else parse_expression
+    for i in range(len(items)):   # each item alone first: a syntax error is reported as in that item alone
+        parse(_scalar_text(items, i), origin(items, i))
     first = origin(container, key)
     combined = Origin(first.path, first.line, first.col, 1, tuple(positions), text)
-    from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
-    node = parse_effects(text, combined) if effects else parse_expression(text, combined)
+    node = parse(text, combined)
     return Expr(node, combined, text)
 
 

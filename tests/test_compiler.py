@@ -190,6 +190,7 @@ def test_a_goal_written_as_a_list_is_their_conjunction(tmp_path):
      "unknown function 'agentOnBlok'"),
     ("goal:\n  - agentOnBlock(agent, gold)\n  - [a, b]\n", (29, 5), "expected an expression as text, found a list"),
     ("goal: []\n", (27, 7), "`goal` is an empty list"),
+    ("goal:\n  - agentOnBlock(agent, gold)\n  - agentOnBlock(agent,\n", (29, 24), "the expression ends too early"),
     ("goal: 1.5\n", (27, 7), "found the number 1.5"),
 ])
 def test_an_error_in_a_listed_goal_points_into_its_item(tmp_path, goal_yaml, where, says):
