@@ -14,7 +14,7 @@ from ..errors import BccError
 from . import ast, ir
 from .domain import ClassDef, Expr
 from .dungeon import Dungeon
-from .limits import MAX_GENERATED_NESTING, MAX_GRID_CELLS, MAX_GROUND_DEPTH, MAX_KEYED_OBJECTS
+from .limits import MAX_GENERATED_NESTING, MAX_GRID_CELLS, MAX_GROUND_DEPTH, MAX_GROUND_EFFECTS, MAX_KEYED_OBJECTS
 from .source import suggest
 
 CMP_NUMERIC = {"<", "<=", ">", ">="}
@@ -69,6 +69,7 @@ class Grounder:
         self.fresh = itertools.count()
         self.depth = 0  # of `expr` calls in progress: bounds the nesting of the code emitted
         self.writes: list = []  # (class, attr) or ("<grid>", y IR), recorded by effects
+        self.effect_work = 0    # effect nodes grounded so far: bounds what nested first/forall multiply
         self.key_ranges = {c.name: self._key_ranges(c) for c in self.dom.classes.values() if c.key}
 
     # ---- helpers ---------------------------------------------------------------------
@@ -454,6 +455,11 @@ class Grounder:
     def effects(self, nodes, ctx: Ctx) -> tuple:
         out = []
         for node in nodes:
+            self.effect_work += 1
+            if self.effect_work > MAX_GROUND_EFFECTS:   # nested `first`/`forall` multiply: 20 deep over 9 objects is 9^20
+                raise ctx.error(node, f"the effects expand to more than {MAX_GROUND_EFFECTS:,} ground effects "
+                                      "(each `first` and `forall` repeats its body once per object, and nested "
+                                      "ones multiply)")
             out.extend(getattr(self, "e_" + type(node).__name__)(node, ctx))
         return tuple(out)
 

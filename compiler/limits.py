@@ -17,6 +17,7 @@ MAX_REF_LENGTH = 1024                 # `domain:` / `extends:` references (a nam
 MAX_EXPRESSION_DEPTH = 40             # brackets, operators and blocks inside each other
 MAX_GROUND_DEPTH = 50                 # the same after inlining functions into their callers
 MAX_GENERATED_NESTING = 90            # preconditions + nested conditional effects of one action
+MAX_GROUND_EFFECTS = 100_000          # effect nodes grounded for one dungeon (nested first/forall multiply)
 MAX_GRID_CELLS = 2**24                # cells of the grid (x * y * z)
 MAX_KEYED_OBJECTS = 65_536            # objects of another keyed class (inventory slots, ...)
 # The length of names is the names rule's (names.MAX_NAME), for names in expressions too.

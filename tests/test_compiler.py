@@ -230,3 +230,23 @@ def test_a_property_type_that_is_not_a_name_is_bad_input(tmp_path, written):
     with pytest.raises(BccError, match="unknown type") as caught:
         compile_dungeon(tmp_path / "barnyard.yaml")
     assert caught.value.path.endswith("farm.yaml") and caught.value.line is not None
+
+
+def test_nested_firsts_that_multiply_are_refused_quickly(tmp_path):
+    """Found by fuzzing: 20 nested `first i in inventoryBlock where true {...}` grounded the
+    body 9^20 times (compiling never ended; only --time-limit stopped a solve). The grounder
+    counts the effects it makes and refuses past the limit, at the effect that crosses it."""
+    import time
+    from bcc.compiler.domain import DOMAINS_DIR
+    from bcc.errors import BccError
+    nested = "a.verticalDirection = 1"
+    for _ in range(20):
+        nested = f"first i in inventoryBlock where true {{{nested}}}"
+    text = (DOMAINS_DIR / "minecraft.yaml").read_text()
+    assert "    effect: a.verticalDirection = 1\n" in text
+    (tmp_path / "dom.yaml").write_text(text.replace("    effect: a.verticalDirection = 1\n", f"    effect: {nested}\n", 1))
+    path = _bridge_with(tmp_path, "goal: agentOnBlock(agent, gold)\n", (tmp_path / "dom.yaml").read_text())
+    start = time.process_time()
+    with pytest.raises(BccError, match="more than 100,000 ground effects") as caught:
+        compile_dungeon(path)
+    assert time.process_time() - start < 30 and caught.value.path.endswith("dom.yaml") and caught.value.line
