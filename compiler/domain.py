@@ -325,10 +325,11 @@ def _joined(container, key, separator: str, effects: bool) -> Expr:
     items = container[key]
     if not items:
         raise error_at(container, key, f"`{key}` is an empty list: leave the key out instead")
-    text, positions = "", []
+    text, positions, parts = "", [], []
     for i in range(len(items)):
         part = _scalar_text(items, i)
         where = origin(items, i)
+        parts.append((part, where))
         start = where.locate(1, 1)
         if i:
             text += separator
@@ -343,11 +344,14 @@ def _joined(container, key, separator: str, effects: bool) -> Expr:
         positions += [where.locate(line, col)] * len(closing)
     from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
     parse = parse_effects if effects else parse_expression
-    for i in range(len(items)):   # each item alone first: a syntax error is reported as in that item alone
-        parse(_scalar_text(items, i), origin(items, i))
     first = origin(container, key)
     combined = Origin(first.path, first.line, first.col, 1, tuple(positions), text)
-    node = parse(text, combined)
+    try:
+        node = parse(text, combined)
+    except BccError:
+        for part, where in parts:   # report the error as in the first bad item alone, not the joining's
+            parse(part, where)
+        raise
     return Expr(node, combined, text)
 
 
