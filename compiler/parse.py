@@ -28,7 +28,7 @@ _SPELLING = {
     "COMMA": "','", "DOT": "'.'", "COLON": "':'", "SEMICOLON": "';'", "EQUAL": "'='",
     "MINUS": "'-'", "CMP_OP": "a comparison", "ADD_OP": "'+' or '-'", "MUL_OP": "'*', '//' or '%'",
     "AUG_OP": "'+=', '-=', '*=', '//=' or '%='",
-    "NAME": "a name", "INT": "a number", "$END": "the end of the text", "_IN": "'in' or ':'",
+    "NAME": "a name", "INT": "a number", "$END": "the end of the text",
 }
 
 
@@ -95,6 +95,17 @@ class _ToAst:
 
     def compare(self, meta, *items):
         return ast.Compare(tuple(items[0::2]), tuple(str(t) for t in items[1::2]), _pos(items[1]))
+
+    def member(self, meta, value, choices):
+        """`x in [a, b]`: `x == a or x == b` (x is an expression without effects, so reading
+        it once per choice changes nothing); a long list becomes a balanced tree."""
+        tests = [ast.Compare((value, c), ("==",), c.pos) for c in choices]
+        return _balanced("or_", tests, [None] * (len(tests) - 1))
+
+    def not_member(self, meta, value, choices):
+        """`x not in [a, b]`: `x != a and x != b`."""
+        tests = [ast.Compare((value, c), ("!=",), c.pos) for c in choices]
+        return _balanced("and_", tests, [None] * (len(tests) - 1))
 
     def and_(self, meta, left, right):
         return ast.And(left, right, _pos(meta))
@@ -168,6 +179,8 @@ def _name(tok: Token) -> str:
 
 # Rules that only group their children add no nesting of their own.
 _FLAT = {"args", "effects", "block", "elif", "init", "start_expr", "start_effects"}
+# `x in [...]` and `x not in [...]`: the comparisons they become are a chain of or / and.
+_MEMBERSHIP = {"member", "not_member"}
 # Chains of one operator, rebuilt as balanced trees: rule -> operator (None: the rule is the operator).
 _CHAINS = {"and_": None, "or_": None}
 # Binary operators whose chains are rebuilt: `+` and `-` are one family (a long
@@ -272,6 +285,8 @@ def _build(tree: Tree):
             args = values[len(values) - n:] if n else []
             del values[len(values) - n:]
             depth = max((d for _, d in args), default=0) + (node.data not in _FLAT)
+            if node.data in _MEMBERSHIP:     # a comparison per choice, joined by a balanced chain
+                depth += _chain_depth(len(args[-1][0]))
             value = getattr(_TO_AST, node.data)(node.meta, *(v for v, _ in args))
             where = node.meta
         else:  # chain
@@ -344,6 +359,9 @@ def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:
 
 # What people bring from other languages, and bcc's spelling of it.
 _OPERATOR_WORDS = {"&&": "and", "&": "and", "||": "or", "|": "or", "!": "not"}
+_KEYWORDS = ("and", "or", "not", "in", "exists", "forall", "if", "elif", "else", "true", "false")
+_QUANTIFIER_WORDS = {"any": "exists", "some": "exists", "exist": "exists", "there": "exists",
+                     "all": "forall", "every": "forall", "each": "forall", "for": "forall"}
 _QUOTES = set("'\"\u2018\u2019\u201c\u201d`")
 
 
@@ -352,7 +370,10 @@ def _foreign_spelling(found: str, kind: str = "") -> str:
     condition), or "" (the parser's list of what it expected is then the message)."""
     if found in _OPERATOR_WORDS:
         return f"; bcc writes `{_OPERATOR_WORDS[found]}` (its logical operators are the words and, or, not)"
-    if found.lower() in ("and", "or", "not") and found != found.lower():
+    if found.lower() in _QUANTIFIER_WORDS:
+        kind = _QUANTIFIER_WORDS[found.lower()]
+        return f"; bcc writes `{kind} b in block . condition` (or `{kind} b in block: condition`)"
+    if found.lower() in _KEYWORDS and found != found.lower():
         return f"; keywords are lowercase: write `{found.lower()}`"
     if found[:1] in _QUOTES:
         return "; names are written without quotes, e.g. agentInRoom(agent, red)"

@@ -39,6 +39,23 @@ def test_four_rooms_goal_override_matches_shipped_goal_files(room):
     assert by_flag["solved"] and by_flag["cost"] == by_file["cost"]
 
 
+@pytest.mark.parametrize("bcc_style,python_style", [
+    ("agentInRoom(agent, orange) or agentInRoom(agent, green)",
+     "exists r in room: r.color in [orange, green] and agentInRoom(agent, r)"),
+    ("not agentInRoom(agent, red) and not agentInRoom(agent, orange)",
+     "forall r in room: r.color not in {red, orange} or not agentInRoom(agent, r)"),
+])
+def test_goals_written_python_style_mean_the_same(bcc_style, python_style):
+    # The second form uses spellings people bring from Python (`in [...]`, a `:` before the
+    # body); solved apart, BFS must find the same optimal cost for both.
+    costs = []
+    for goal in (bcc_style, python_style):
+        result = run("solve", "four_rooms", "--solver", "bfs", "--goal", goal, "--json")
+        assert result.exit_code == 0, result.output
+        costs.append(json.loads(result.stdout)["cost"])
+    assert costs[0] == costs[1] > 0
+
+
 def test_solve_writes_plan_file_and_validate_reads_stdin(tmp_path):
     out = tmp_path / "plan.txt"
     assert run("solve", "bridge", "-o", str(out)).exit_code == 0

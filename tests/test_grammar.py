@@ -196,6 +196,47 @@ def test_quantifier_colon_and_in_are_the_same(text):
     assert E(text.replace(" in ", " : ", 1)) == E(text)
 
 
+@pytest.mark.parametrize("text", [
+    "exists b in block . b.x == 1 and p",
+    "forall a in agent . (a.alive or q)",
+])
+def test_a_quantifier_body_may_follow_a_colon(text):
+    # Python's `for x in C:`; the class name ends before the colon, so `.`/`:` never mix up.
+    assert E(text.replace(" . ", ": ", 1)) == E(text)
+    assert E(text.replace(" in ", ": ", 1).replace(" . ", " : ", 1)) == E(text)
+
+
+def x_is(op: str, *values: str):
+    return [Compare((Attr(a, "x"), Name(v) if v.isalpha() else Int(int(v))), (op,)) for v in values]
+
+
+@pytest.mark.parametrize("text,tree", [
+    ("a.x in [1, b]", Or(*x_is("==", "1", "b"))),
+    ("a.x in {1, b}", Or(*x_is("==", "1", "b"))),
+    ("a.x in (1, b, c)", Or(Or(*x_is("==", "1", "b")), x_is("==", "c")[0])),
+    ("a.x in [1]", x_is("==", "1")[0]),
+    ("a.x not in [1, b]", And(*x_is("!=", "1", "b"))),
+    # `not` before the whole membership negates it; `not in` is the membership's own operator
+    ("not a.x in [1, b]", Not(Or(*x_is("==", "1", "b")))),
+    ("p and a.x in [1, b] or q", Or(And(Name("p"), Or(*x_is("==", "1", "b"))), Name("q"))),
+])
+def test_membership_is_a_disjunction_of_equalities(text, tree):
+    assert E(text) == tree
+
+
+def test_long_membership_lists_stay_shallow():
+    # 2,000 choices: as a left-nested `or` chain this would be 2,000 levels deep, past the
+    # 40-level limit; balanced, it is about 11.
+    choices = ", ".join(str(i) for i in range(2000))
+    assert isinstance(E(f"a.x in [{choices}]"), Or)
+    assert isinstance(E(f"a.x not in [{choices}]"), And)
+
+
+@pytest.mark.parametrize("text", ["a.x in []", "a.x in [1,]", "a.x in 3", "a.x : [1]", "a.x not [1]"])
+def test_bad_membership_is_a_syntax_error(text):
+    assert err(text).message.startswith("syntax error: ")
+
+
 def test_comments_and_newlines_are_whitespace():
     assert E("a and  # why\n  b\n# done") == And(a, b)
     assert F("a.x = 1;  # first\n\n  a.y = 2  # second\n") == F("a.x = 1; a.y = 2")
@@ -419,6 +460,13 @@ FOREIGN = [
     ('f(a, "red")', (1, 6), "names are written without quotes"),
     ("f(a, \u201cred\u201d)", (1, 6), "names are written without quotes"),
     ("a.x = 3", (1, 5), "compare with `==`"),
+    ("for all b in block . p", (1, 1), "bcc writes `forall b in block . condition`"),
+    ("for each b in block: p", (1, 1), "bcc writes `forall"),
+    ("q and any b in block . p", (1, 7), "bcc writes `exists b in block . condition`"),
+    ("every b in block . p", (1, 1), "bcc writes `forall"),
+    ("ForAll b in block . p", (1, 1), "keywords are lowercase: write `forall`"),
+    ("Exists b in block . p", (1, 1), "keywords are lowercase: write `exists`"),
+    ("a.x IN [1]", (1, 5), "keywords are lowercase: write `in`"),
 ]
 
 
@@ -568,8 +616,8 @@ def show(n, sep: str = " ", colon: bool = False) -> str:
     if isinstance(n, Not):
         return f"(not{sep}({s(n.operand)}))"
     if isinstance(n, Quantifier):
-        binder = ":" if colon else "in"
-        return f"({n.kind} {n.var}{sep}{binder} {n.cls}{sep}.{sep}({s(n.body)}))"
+        binder, then = (":", ":") if colon else ("in", ".")
+        return f"({n.kind} {n.var}{sep}{binder} {n.cls}{sep}{then}{sep}({s(n.body)}))"
     raise TypeError(n)
 
 
