@@ -13,6 +13,7 @@ import re
 from functools import lru_cache
 
 from lark import Lark, Token, Tree
+from lark.lark import PostLex
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from ..errors import BccError
@@ -32,10 +33,21 @@ _SPELLING = {
 }
 
 
+class _WholeWords(PostLex):
+    """Names are lexed in every parser state, so a word is never split at a keyword it
+    starts with: after `v.traded = true` and a line break, `inventoryBlock` is one name
+    (an unexpected one, so the line break ends the effect), not the keyword `in` and
+    `ventoryBlock`."""
+    always_accept = ("NAME",)
+
+    def process(self, stream):
+        return stream
+
+
 @lru_cache(maxsize=1)
 def _parser() -> Lark:
     return Lark(GRAMMAR_FILE.read_text(encoding="utf-8"), start=["start_expr", "start_effects"],
-                parser="lalr", propagate_positions=True, maybe_placeholders=True,
+                parser="lalr", propagate_positions=True, maybe_placeholders=True, postlex=_WholeWords(),
                 cache=True)  # lark keys its cache on the grammar text: a changed grammar rebuilds
 
 
@@ -317,15 +329,35 @@ def _parse(text: str, start: str, where: Origin):
     if not text.strip():
         raise where.error("empty expression")
     try:
-        tree = _parser().parse(text, start=start)
+        if start == "start_effects":
+            tree = _parser().parse(text, start=start, on_error=lambda exc: _newline_ends_effect(exc, text))
+        else:
+            tree = _parser().parse(text, start=start)
         return _build(tree)
     except UnexpectedInput as exc:
-        raise _syntax_error(exc, text, where) from None
+        raise _syntax_error(exc, text, where, effects=start == "start_effects") from None
     except _Refused as exc:
         raise where.error(exc.message, *exc.pos) from None
 
 
-def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:
+def _newline_ends_effect(exc: UnexpectedInput, text: str) -> bool:
+    """Effects written one a line, without `;` (as in a YAML block scalar): where the parser
+    is stuck at the first token of a line and a `;` would fit, the line break is that `;`
+    (as JavaScript inserts its semicolons). Returns whether parsing may go on."""
+    if not isinstance(exc, UnexpectedToken) or exc.token.type == "$END" or exc.token.start_pos is None:
+        return False
+    before = text[:exc.token.start_pos].rstrip(" \t")
+    if before and not before.endswith("\n"):
+        return False
+    parser = exc.interactive_parser
+    if "SEMICOLON" not in parser.accepts():
+        return False
+    parser.feed_token(Token.new_borrow_pos("SEMICOLON", ";", exc.token))
+    parser.feed_token(exc.token)
+    return True
+
+
+def _syntax_error(exc: UnexpectedInput, text: str, where: Origin, effects: bool = False) -> BccError:
     # `accepts` (lark >= 1.0) is what the parser can really take here; `expected` may list
     # tokens of states reached only by default reductions.
     names = getattr(exc, "accepts", None) or getattr(exc, "expected", None) or getattr(exc, "allowed", None) or ()
@@ -340,13 +372,16 @@ def _syntax_error(exc: UnexpectedInput, text: str, where: Origin) -> BccError:
         before = re.search(r"([A-Za-z]+)\s*$", text[:tok.start_pos]) if tok.start_pos is not None else None
         if before and _foreign_spelling(before.group(1)):   # `NOT x`: the word before was read as a name
             word = before.group(1)
-            line = text.count("\n", 0, before.start(1)) + 1
-            col = before.start(1) - (text.rfind("\n", 0, before.start(1)) + 1) + 1
-            return where.error(f"syntax error: unexpected {word!r}{_foreign_spelling(word)}", line, col)
+            if effects and word.lower() in ("for", "each", "every", "all"):
+                return where.error(f"syntax error: unexpected {word!r}; an effect repeats with "
+                                   "`forall i in C { effects }` (or `first i in C where condition { effects }`)",
+                                   *_line_col(text, before.start(1)))
+            return where.error(f"syntax error: unexpected {word!r}{_foreign_spelling(word)}",
+                               *_line_col(text, before.start(1)))
         found = text[tok.start_pos:tok.start_pos + 2] if tok.start_pos is not None else ""
         if found in ("++", "--"):
             return where.error(f"syntax error: unexpected {found!r}; write `{found[0]}= 1`", tok.line, tok.column)
-        hint = _foreign_spelling(str(tok), tok.type)
+        hint = (_effect_spelling(str(tok), names) if effects else "") or _foreign_spelling(str(tok), tok.type)
         return where.error(f"syntax error: unexpected {str(tok)!r}{hint or want}", tok.line, tok.column)
     if isinstance(exc, UnexpectedCharacters):
         found = text[exc.pos_in_stream:exc.pos_in_stream + 2]
@@ -363,6 +398,21 @@ _KEYWORDS = ("and", "or", "not", "in", "exists", "forall", "if", "elif", "else",
 _QUANTIFIER_WORDS = {"any": "exists", "some": "exists", "exist": "exists", "there": "exists",
                      "all": "forall", "every": "forall", "each": "forall", "for": "forall"}
 _QUOTES = set("'\"\u2018\u2019\u201c\u201d`")
+
+
+def _line_col(text: str, offset: int) -> tuple[int, int]:
+    return text.count("\n", 0, offset) + 1, offset - (text.rfind("\n", 0, offset) + 1) + 1
+
+
+def _effect_spelling(found: str, expected) -> str:
+    """A hint for effects written as in Python or Pascal (`if p:`, `then`, `:=`, `==`)."""
+    if found in (":", "then") and "LBRACE" in expected:
+        return "; a block of effects goes in braces, with no `:` or `then` before it: `if condition { effects }`"
+    if found == ":" and "EQUAL" in expected:
+        return "; assign with `=`"
+    if found == "==" and "EQUAL" in expected:
+        return "; an effect assigns with `=` (`==` compares)"
+    return ""
 
 
 def _foreign_spelling(found: str, kind: str = "") -> str:

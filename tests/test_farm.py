@@ -126,6 +126,18 @@ def test_a_new_class_in_a_temporary_yaml_file_only(tmp_path):
     assert result.cost == get_solver("bfs")(model, BUDGET).cost == 5
 
 
+def test_effects_written_one_a_line_need_no_semicolons(tmp_path):
+    # The trade effect as people write a YAML block scalar: one effect a line, no `;`.
+    one_a_line = VILLAGER_DOMAIN.replace("v.traded = true;\n", "v.traded = true\n")
+    assert one_a_line != VILLAGER_DOMAIN
+    (tmp_path / "village.yaml").write_text(one_a_line)
+    (tmp_path / "v.yaml").write_text(VILLAGE)
+    model = compile_dungeon(tmp_path / "v.yaml")
+    result = get_solver("bfs")(model, BUDGET)
+    # the same 5-step plan as with `;` (derived in the test above): the trade gives bread
+    assert result.cost == 5 and result.plan[-1].startswith("trade")
+
+
 def _domain(tmp_path, text: str) -> Path:
     (tmp_path / "d.yaml").write_text(text)
     (tmp_path / "g.yaml").write_text((ROOT / "dungeons" / "grid.yaml").read_text().replace(

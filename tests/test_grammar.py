@@ -493,6 +493,54 @@ def test_augmented_assignment_and_else_if_are_the_long_forms(short, long):
     assert F(short) == F(long)
 
 
+@pytest.mark.parametrize("one_a_line,with_semicolons", [
+    ("a.x = 1\na.y = 2", "a.x = 1; a.y = 2"),
+    ("a.x = 1   # first\n   a.y = 2  # second\n", "a.x = 1; a.y = 2"),
+    ("a.x = 1\n\nif p {\n  a.y = 2\n  a.z = 3\n}\nremove block[1, 2, 3]",
+     "a.x = 1; if p { a.y = 2; a.z = 3 }; remove block[1, 2, 3]"),
+    ("if p { a.x = 1 }\nelse { a.x = 2 }\nb.y = 1", "if p { a.x = 1 } else { a.x = 2 }; b.y = 1"),
+    ("a.x = 1;\na.y = 2", "a.x = 1; a.y = 2"),
+    # a line that can only continue the effect above continues it
+    ("a.x = b\n  - c\na.y = 2", "a.x = b - c; a.y = 2"),
+    ("a.x = f(b,\n  c)\na.y = 2", "a.x = f(b, c); a.y = 2"),
+    # a name that starts with a keyword is one name, even where only the keyword could follow
+    ("a.x = true\ninventoryBlock[s].count = 0", "a.x = true; inventoryBlock[s].count = 0"),
+    ("a.x = b\nandroid.y = 1\norange.z = 2\nnotable.w = 3", "a.x = b; android.y = 1; orange.z = 2; notable.w = 3"),
+    ("if p { a.x = 1 }\nelsewhere.y = 2\nifs.z = 3", "if p { a.x = 1 }; elsewhere.y = 2; ifs.z = 3"),
+])
+def test_a_line_break_separates_effects_where_a_semicolon_fits(one_a_line, with_semicolons):
+    assert F(one_a_line) == F(with_semicolons)
+
+
+@pytest.mark.parametrize("text,where", [
+    ("a.x = 1 a.y = 2", (1, 9)),           # on one line, `;` is still needed
+    ("a.x = 1\n}", (2, 1)),
+    ("a.x = 1\na.y == 2", (2, 5)),
+    ("a.x = 1\na.y = ", (2, 6)),
+])
+def test_errors_after_a_line_break_keep_their_positions(text, where):
+    e = err(text, effects=True)
+    assert (e.line, e.col) == where, e.message
+
+
+def test_conditions_do_not_split_at_line_breaks():
+    err("p\nq")
+
+
+@pytest.mark.parametrize("text,where,hint", [
+    ("if p: a.x = 1", (1, 5), "in braces, with no `:` or `then`"),
+    ("if p then { a.x = 1 }", (1, 6), "in braces, with no `:` or `then`"),
+    ("forall i in C: { i.x = 1 }", (1, 14), "in braces"),
+    ("a.x := 1", (1, 5), "assign with `=`"),
+    ("a.x == 1", (1, 5), "an effect assigns with `=`"),
+    ("for i in C { i.x = 1 }", (1, 1), "`forall i in C { effects }`"),
+    ("a.x = 1\n  for each i in C { i.x = 1 }", (2, 3), "`forall i in C { effects }`"),
+])
+def test_effects_spelled_as_in_other_languages_get_a_hint(text, where, hint):
+    e = err(text, effects=True)
+    assert (e.line, e.col) == where and hint in e.message, e.message
+
+
 @pytest.mark.parametrize("text,hint", [("a.x++", "write `+= 1`"), ("a.x--", "write `-= 1`")])
 def test_increments_point_at_augmented_assignment(text, hint):
     e = err(text, effects=True)
@@ -501,7 +549,7 @@ def test_increments_point_at_augmented_assignment(text, hint):
 
 BAD_EFFECTS = [
     ("a.x = ", ["ends too early"]),
-    ("a.x == 1", ["'=='", "'='"]),
+    ("a.x == 1", ["'=='", "`=`"]),
     ("if p a.x = 1", ["'a'"]),
     ("if p { a.x = 1 } b.y = 2", ["'b'", "';'"]),
     ("if p { }", ["'}'"]),
@@ -648,7 +696,9 @@ def _effect(depth: int):
 effect_lists = st.lists(_effect(2), min_size=1, max_size=3).map(tuple)
 
 
-def show_effects(effs, sep: str = " ", trailing: bool = False) -> str:
+def show_effects(effs, sep: str = " ", trailing: bool = False, lines: bool = False) -> str:
+    """Effects as text; with `lines`, one a line without `;` wherever the next effect cannot
+    be read as continuing the one before (it does not start with `(`)."""
     s = lambda m: show(m, sep)  # noqa: E731
 
     def one(e) -> str:
@@ -674,10 +724,17 @@ def show_effects(effs, sep: str = " ", trailing: bool = False) -> str:
             return f"forall {e.var} in {e.cls}{where}{sep}{{{block(e.body)}}}"
         raise TypeError(e)
 
-    def block(body) -> str:
-        return f"{sep}" + f";{sep}".join(one(e) for e in body) + f"{sep}"
+    def join(body) -> str:
+        texts = [one(e) for e in body]
+        out = texts[0]
+        for text in texts[1:]:
+            out += ("\n" if lines and not text.startswith("(") else f";{sep}") + text
+        return out
 
-    return f";{sep}".join(one(e) for e in effs) + (";" if trailing else "")
+    def block(body) -> str:
+        return f"{sep}" + join(body) + f"{sep}"
+
+    return join(effs) + (";" if trailing else "")
 
 
 PROPERTY = settings(max_examples=120, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
@@ -694,6 +751,13 @@ def test_expression_round_trip(tree, sep, colon):
 @given(effect_lists, separators, st.booleans())
 def test_effects_round_trip(effs, sep, trailing):
     text = show_effects(effs, sep, trailing)
+    assert parse_effects(text, HERE) == effs, text
+
+
+@settings(max_examples=60, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(effect_lists, separators)
+def test_effects_one_a_line_round_trip(effs, sep):
+    text = show_effects(effs, sep, lines=True)
     assert parse_effects(text, HERE) == effs, text
 
 
