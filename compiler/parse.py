@@ -346,8 +346,7 @@ def _newline_ends_effect(exc: UnexpectedInput, text: str) -> bool:
     (as JavaScript inserts its semicolons). Returns whether parsing may go on."""
     if not isinstance(exc, UnexpectedToken) or exc.token.type == "$END" or exc.token.start_pos is None:
         return False
-    before = text[:exc.token.start_pos].rstrip(" \t")
-    if before and not before.endswith("\n"):
+    if not _starts_line(text, exc.token.start_pos):
         return False
     parser = exc.interactive_parser
     if "SEMICOLON" not in parser.accepts():
@@ -382,6 +381,8 @@ def _syntax_error(exc: UnexpectedInput, text: str, where: Origin, effects: bool 
         if found in ("++", "--"):
             return where.error(f"syntax error: unexpected {found!r}; write `{found[0]}= 1`", tok.line, tok.column)
         hint = (_effect_spelling(str(tok), names) if effects else "") or _foreign_spelling(str(tok), tok.type)
+        if not hint and not effects and _starts_line(text, tok.start_pos) and "AND" in names:
+            hint = "; conditions on separate lines need `and` between them (or write them as a YAML list, `- ` before each)"
         return where.error(f"syntax error: unexpected {str(tok)!r}{hint or want}", tok.line, tok.column)
     if isinstance(exc, UnexpectedCharacters):
         found = text[exc.pos_in_stream:exc.pos_in_stream + 2]
@@ -398,6 +399,14 @@ _KEYWORDS = ("and", "or", "not", "in", "exists", "forall", "if", "elif", "else",
 _QUANTIFIER_WORDS = {"any": "exists", "some": "exists", "exist": "exists", "there": "exists",
                      "all": "forall", "every": "forall", "each": "forall", "for": "forall"}
 _QUOTES = set("'\"\u2018\u2019\u201c\u201d`")
+
+
+def _starts_line(text: str, offset: int | None) -> bool:
+    """Whether only blanks stand between the line's start (or the text's) and `offset`."""
+    if offset is None:
+        return False
+    before = text[:offset].rstrip(" \t")
+    return not before or before.endswith("\n")
 
 
 def _line_col(text: str, offset: int) -> tuple[int, int]:

@@ -524,7 +524,11 @@ def test_errors_after_a_line_break_keep_their_positions(text, where):
 
 
 def test_conditions_do_not_split_at_line_breaks():
-    err("p\nq")
+    # A line break in a condition is never an `and` (a YAML list is the way to list them),
+    # but the message says so.
+    e = err("p(a)\n  q(b)")
+    assert (e.line, e.col) == (2, 3) and "need `and` between them" in e.message
+    assert "need `and`" not in err("p q").message
 
 
 @pytest.mark.parametrize("text,where,hint", [
