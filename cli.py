@@ -21,8 +21,9 @@ for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREAD
 
 from .errors import BccError, ModelError
 
-from .cli_shared import (clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
-                         print_result, progress_enabled, solver_flags, solver_request, time_limit_option, write_output)
+from .cli_shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
+                         print_result, progress_enabled, solver_flags, solver_request, time_limit_option, within_budget,
+                         write_output)
 from .exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
 
 
@@ -86,10 +87,12 @@ def main():
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the compiled model as JSON (format bcc-model/2, the report included) to FILE, atomically.")
 @click.option("--emit-python", type=click.Path(dir_okay=False, writable=True), help="Write the generated successor code to FILE.")
 @goal_option
-def compile_cmd(dungeon, as_json, output, emit_python, goal):
+@budget_options
+def compile_cmd(dungeon, as_json, output, emit_python, goal, time_limit, max_memory):
     """Parse, type-check and compile DUNGEON (a file or a shipped name); report the model."""
-    model = compile_model(dungeon, goal)
-    report = model.compile_report()
+    with within_budget(time_limit, max_memory, as_json, dungeon):
+        model = compile_model(dungeon, goal)
+        report = model.compile_report()
     if output:
         from .model_json import model_json
         write_output(output, json.dumps(model_json(model), indent=2) + "\n")
@@ -175,14 +178,16 @@ def _read_plan_arg(plan: str):
 @click.argument("plan")
 @json_option
 @goal_option
-def validate_cmd(dungeon, plan, as_json, goal):
+@budget_options
+def validate_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
     """Replay PLAN (a file, one action a line, or - for stdin) in DUNGEON.
 
     Exit 0 when it reaches the goal, 1 when it does not (saying at which step and why)."""
     from .simulate import replay
-    model = compile_model(dungeon, goal)
-    actions, path = _read_plan_arg(plan)
-    result = replay(model, actions, path)
+    with within_budget(time_limit, max_memory, as_json, dungeon):
+        model = compile_model(dungeon, goal)
+        actions, path = _read_plan_arg(plan)
+        result = replay(model, actions, path)
     if as_json:
         emit_json({"dungeon": model.name, "goal": model.goal_text, **result.to_json()})
     else:
@@ -195,19 +200,21 @@ def validate_cmd(dungeon, plan, as_json, goal):
 @click.option("--plan", "plan", help="Replay this plan (file or -) and draw the agent's path.")
 @json_option
 @goal_option
-def show_cmd(dungeon, plan, as_json, goal):
+@budget_options
+def show_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
     """Draw DUNGEON from above (rows are z, columns x), optionally with a plan's path."""
     from .render import render
     from .simulate import replay
-    model = compile_model(dungeon, goal)
-    state, path, note = model.initial, None, None
-    if plan:
-        actions, ppath = _read_plan_arg(plan)
-        result = replay(model, actions, ppath)
-        path = [model.agent_position(s) for s in result.states]
-        state = result.states[-1]
-        note = ("valid: " if result.valid else "invalid: ") + result.message
-    picture = render(model, state, path)
+    with within_budget(time_limit, max_memory, as_json, dungeon):
+        model = compile_model(dungeon, goal)
+        state, path, note = model.initial, None, None
+        if plan:
+            actions, ppath = _read_plan_arg(plan)
+            result = replay(model, actions, ppath)
+            path = [model.agent_position(s) for s in result.states]
+            state = result.states[-1]
+            note = ("valid: " if result.valid else "invalid: ") + result.message
+        picture = render(model, state, path)
     if as_json:
         emit_json({"dungeon": model.name, "goal": model.goal_text, "rows": picture.splitlines(),
                     "agent": list(model.agent_position(state)), "path": [list(p) for p in path or []],

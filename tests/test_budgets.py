@@ -128,6 +128,33 @@ def test_commands_that_are_not_searches_stop_at_the_time_limit(command, tmp_path
     assert not (tmp_path / "out").exists()
 
 
+# Grounding one action over three of 400 rooms: 64 million combinations, seconds of CPU
+# before the ground-effect limit refuses the domain (6 s here), so 0.5 s is far short of it.
+HEAVY_DOMAIN = """\
+domain: heavy
+extends: minecraft
+actions:
+  triple:
+    params: {a: agent, p: room, q: room, r: room}
+    pre: p.xMin == q.xMax + r.zMin
+    effect: a.alive = true
+"""
+
+
+@pytest.mark.parametrize("command", [["compile"], ["show"], ["validate", "{tmp}/plan.txt"]])
+def test_commands_that_compile_stop_at_the_time_limit(command, tmp_path, startup):
+    from bcc.compiler.dungeon import resolve_dungeon_path
+    (tmp_path / "heavy.yaml").write_text(HEAVY_DOMAIN)
+    rooms = "".join(f"  - {{name: r{i}, color: red, x: [0, 1], z: [0, 1]}}\n" for i in range(400))
+    dungeon = resolve_dungeon_path("bridge").read_text().replace("domain: minecraft", "domain: heavy.yaml")
+    (tmp_path / "d.yaml").write_text(dungeon + "rooms:\n" + rooms)
+    (tmp_path / "plan.txt").write_text("# no steps\n")
+    argv = [command[0], str(tmp_path / "d.yaml"), *(a.format(tmp=tmp_path) for a in command[1:])]
+    code, data, wall, _ = run(*argv, "--time-limit", "0.5", "--json")
+    assert wall <= startup + 0.5 + 1.5, f"{wall:.1f} s for --time-limit 0.5"
+    assert code == 1 and data["budget"] == "time_limit"
+
+
 def test_memory_budget_caps_what_the_process_allocates(tmp_path):
     """A memory budget smaller than what the search needs ends as a budget stop, and the
     process never holds much more than the budget (an allocation past it fails at once)."""
