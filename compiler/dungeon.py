@@ -285,13 +285,10 @@ class _Builder:
         dungeon.keyed[icls.name] = {}
         if items is None:
             return
-        if not isinstance(items, YList):
-            raise error_at(self.data, "inventory", "`inventory` is a list of {item: NAME, count: N}, slot 0 first")
+        items = _inventory_slots(items, self.data)
         item_attr, count_attr = icls.attrs[spec["item"]], icls.attrs[spec["count"]]
         ienum = self.domain.enums[item_attr.type]
         for slot, entry in enumerate(items):
-            if not isinstance(entry, YMap):
-                raise error_at(items, slot, "an inventory slot is {item: NAME, count: N}")
             check_keys(entry, {"item", "count", "slot"}, {"item"}, "an inventory slot")
             slot = entry.get("slot", slot)
             if entry["item"] not in ienum.values:
@@ -360,3 +357,29 @@ class _Builder:
                 values[attrs] = value
                 dungeon.where[(name, attrs)] = (entry, fkey)
             dungeon.objects[name] = (cls.name, values)
+
+
+def _inventory_slots(items, data: YMap) -> YList:
+    """The inventory as a list of {item, count[, slot]} mappings, slot 0 first. People also
+    write a slot as its item alone (`- diamond_pickaxe`, one of it) and the whole inventory
+    as a mapping `{diamond_pickaxe: 1, burlap_stone: 3}` (slots in the order written); both
+    become that list, keeping each value's place in the file for messages."""
+    def entry(fields: dict, nodes: dict, src) -> YMap:
+        made = YMap(fields)
+        made.node, made.nodes, made.src, made.srcs = data.nodes["inventory"][1], nodes, src, {}
+        return made
+
+    if isinstance(items, YMap):
+        slots = YList(entry({"item": name, "count": count}, {"item": items.nodes[name][:1] * 2,
+                                                              "count": items.nodes[name]}, items.src_of(name))
+                      for name, count in items.items())
+        slots.node, slots.nodes, slots.src = items.node, [items.nodes[name][0] for name in items], items.src
+        return slots
+    if not isinstance(items, YList):
+        raise error_at(data, "inventory", "`inventory` is a list of {item: NAME, count: N} (or NAME), slot 0 first")
+    for slot, item in enumerate(items):
+        if isinstance(item, str):
+            items[slot] = entry({"item": item}, {"item": (items.nodes[slot], items.nodes[slot])}, items.src)
+        elif not isinstance(item, YMap):
+            raise error_at(items, slot, "an inventory slot is {item: NAME, count: N}, or NAME for one of it")
+    return items

@@ -235,6 +235,15 @@ DUNGEON_CASES = [
     Case("inventory-unknown-item", "item: diamond_pickaxe", "item: diamond_pickax", at("diamond_pickax"),
          ("did you mean 'diamond_pickaxe'",)),
     Case("inventory-unknown-key", "count: 1}", "cuont: 1}", at("cuont"), ("did you mean 'count'",)),
+    # the short forms: a slot as its item alone, the inventory as a mapping item -> count
+    Case("inventory-short-slot-unknown-item", "{item: diamond_pickaxe, count: 1}", "diamond_pickax",
+         at("diamond_pickax"), ("did you mean 'diamond_pickaxe'",)),
+    Case("inventory-mapping-unknown-item", "  - {item: diamond_pickaxe, count: 1}", "  diamond_pickax: 1",
+         at("diamond_pickax"), ("did you mean 'diamond_pickaxe'",)),
+    Case("inventory-mapping-count-not-a-number", "  - {item: diamond_pickaxe, count: 1}", "  diamond_pickaxe: lots",
+         at("lots"), ("count",)),
+    Case("inventory-slot-a-list", "{item: diamond_pickaxe, count: 1}", "[diamond_pickaxe]",
+         at("[diamond_pickaxe]"), ("inventory slot",)),
     Case("rooms-unknown-color", None, BASE + ROOMS.replace("color: red", "color: purple"), at("purple"),
          ("'purple'",)),
     Case("rooms-but-goal-names-no-room", None, BASE.replace("goal: agentOnBlock(agent, gold)",
@@ -249,6 +258,31 @@ def test_dungeon_typo_is_one_line_at_its_position(tmp_path, case):
     path = tmp_path / "typo.yaml"
     path.write_text(text, encoding="utf-8")
     check_bad_input(run_cli("solve", str(path)), path, case.where(text), case.says)
+
+
+@pytest.mark.parametrize("inventory", ["inventory:\n  - diamond_pickaxe\n", "inventory:\n  diamond_pickaxe: 1\n",
+                                       "inventory: [diamond_pickaxe]\n", "inventory: {diamond_pickaxe: 1}\n"])
+def test_short_inventories_mean_the_long_form(tmp_path, inventory):
+    from bcc.compiler import compile_dungeon
+    long_form = "inventory:\n  - {item: diamond_pickaxe, count: 1}\n"
+    assert long_form in BASE
+    (tmp_path / "long.yaml").write_text(BASE)
+    (tmp_path / "short.yaml").write_text(BASE.replace(long_form, inventory))
+    assert compile_dungeon(tmp_path / "short.yaml").initial == compile_dungeon(tmp_path / "long.yaml").initial
+
+
+def test_a_mapping_inventory_fills_slots_in_the_order_written(tmp_path):
+    from bcc.compiler import compile_dungeon
+    listed = "inventory:\n  - {item: burlap_stone, count: 3}\n  - {item: diamond_pickaxe, count: 1}\n"
+    mapped = "inventory: {burlap_stone: 3, diamond_pickaxe: 1}\n"
+    (tmp_path / "a.yaml").write_text(BASE.replace("inventory:\n  - {item: diamond_pickaxe, count: 1}\n", listed))
+    (tmp_path / "b.yaml").write_text(BASE.replace("inventory:\n  - {item: diamond_pickaxe, count: 1}\n", mapped))
+    a, b = compile_dungeon(tmp_path / "a.yaml"), compile_dungeon(tmp_path / "b.yaml")
+    assert a.initial == b.initial
+    # and the order matters: slot 0 holds the stones
+    (tmp_path / "c.yaml").write_text(BASE.replace("inventory:\n  - {item: diamond_pickaxe, count: 1}\n",
+                                                  "inventory: {diamond_pickaxe: 1, burlap_stone: 3}\n"))
+    assert compile_dungeon(tmp_path / "c.yaml").initial != a.initial
 
 
 def test_the_base_dungeon_is_fine(tmp_path):
