@@ -361,9 +361,9 @@ class _Builder:
 
 def _inventory_slots(items, data: YMap) -> YList:
     """The inventory as a list of {item, count[, slot]} mappings, slot 0 first. People also
-    write a slot as its item alone (`- diamond_pickaxe`, one of it) and the whole inventory
-    as a mapping `{diamond_pickaxe: 1, burlap_stone: 3}` (slots in the order written); both
-    become that list, keeping each value's place in the file for messages."""
+    write a slot as its item alone (`- ITEM`, one of it) and the whole inventory as a
+    mapping `{ITEM: COUNT, ...}` (slots in the order written); both become that list,
+    keeping each value's place in the file for messages."""
     def entry(fields: dict, nodes: dict, src) -> YMap:
         made = YMap(fields)
         made.node, made.nodes, made.src, made.srcs = data.nodes["inventory"][1], nodes, src, {}
