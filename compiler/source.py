@@ -381,15 +381,28 @@ def check_keys(container: YMap, allowed: set[str], required: set[str], what: str
     """Unknown keys (with a did-you-mean) and missing keys are errors with positions."""
     for key in container:
         if key not in allowed:
-            close = difflib.get_close_matches(str(key), sorted(map(str, allowed)), n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
-            raise error_at(container, key, f"unknown key {shorten(repr(key))} in {what}{hint}", on_key=True)
+            raise error_at(container, key, f"unknown key {shorten(repr(key))} in {what}{suggest(key, allowed)}",
+                           on_key=True)
     for key in sorted(required):
         if key not in container:
             raise error_on(container, f"{what} is missing the key {key!r}")
 
 
+# Words people bring from PDDL, Python or plain English for a key or type bcc spells
+# otherwise; offered when the option is there and the spelling is not close to anything.
+_SYNONYMS = {
+    "precondition": "pre", "preconditions": "pre", "requires": "pre", "require": "pre", "conditions": "pre",
+    "condition": "pre", "when": "pre", "effects": "effect", "do": "effect", "parameters": "params",
+    "param": "params", "args": "params", "arguments": "params", "integer": "int", "number": "int",
+    "boolean": "bool", "attrs": "attributes", "fields": "attributes", "goals": "goal", "objective": "goal",
+    "name": "dungeon", "title": "dungeon", "size": "height", "start": "agent", "items": "inventory",
+}
+
+
 def suggest(name: str, options) -> str:
     """A did-you-mean hint; options may hold any YAML keys (numbers, true, null)."""
-    close = difflib.get_close_matches(str(name), sorted({str(o) for o in options}), n=1)
+    choices = sorted({str(o) for o in options})
+    close = difflib.get_close_matches(str(name), choices, n=1)
+    if not close and _SYNONYMS.get(str(name).lower()) in choices:
+        close = [_SYNONYMS[str(name).lower()]]
     return f" (did you mean {close[0]!r}?)" if close else ""

@@ -559,3 +559,16 @@ def test_unreachable_goal_exits_1_with_solved_false(tmp_path, change):
     assert result["solved"] is False
     assert result["plan"] == [] or result["plan"] is None
     assert run.stderr.strip(), "a reason on stderr"
+
+
+@pytest.mark.parametrize("written,meant,options", [
+    ("preconditions", "pre", {"params", "let", "pre", "effect", "cost"}),
+    ("Requires", "pre", {"params", "let", "pre", "effect", "cost"}),
+    ("parameters", "params", {"params", "let", "pre", "effect", "cost"}),
+    ("integer", "int", {"int", "bool", "blocktype"}),
+    ("name", "dungeon", {"dungeon", "domain", "goal"}),
+    ("precondition", None, {"goal", "agent"}),        # the synonym's key is not offered here
+])
+def test_words_from_other_languages_suggest_bccs_key(written, meant, options):
+    from bcc.compiler.source import suggest
+    assert suggest(written, options) == (f" (did you mean {meant!r}?)" if meant else "")
