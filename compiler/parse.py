@@ -381,8 +381,8 @@ def _syntax_error(exc: UnexpectedInput, text: str, where: Origin, effects: bool 
         if found in ("++", "--"):
             return where.error(f"syntax error: unexpected {found!r}; write `{found[0]}= 1`", tok.line, tok.column)
         hint = (_effect_spelling(str(tok), names) if effects else "") or _foreign_spelling(str(tok), tok.type)
-        if not hint and not effects and _starts_line(text, tok.start_pos) and "AND" in names:
-            hint = "; conditions on separate lines need `and` between them (or write them as a YAML list, `- ` before each)"
+        if not hint and not effects:
+            hint = _condition_layout(text, tok, names)
         return where.error(f"syntax error: unexpected {str(tok)!r}{hint or want}", tok.line, tok.column)
     if isinstance(exc, UnexpectedCharacters):
         found = text[exc.pos_in_stream:exc.pos_in_stream + 2]
@@ -407,6 +407,18 @@ def _starts_line(text: str, offset: int | None) -> bool:
         return False
     before = text[:offset].rstrip(" \t")
     return not before or before.endswith("\n")
+
+
+def _condition_layout(text: str, tok: Token, expected) -> str:
+    """A hint for conditions laid out as lines or as words: `p` and `q` on two lines, or
+    "agent in red room" (an expression wants an operator or a call between names)."""
+    if _starts_line(text, tok.start_pos) and "AND" in expected:
+        return "; conditions on separate lines need `and` between them (or write them as a YAML list, `- ` before each)"
+    after_word = re.search(r"(?<![\w.])[A-Za-z_]\w*\s+$", text[:tok.start_pos])
+    if tok.type == "NAME" and after_word and ("AND" in expected or "LSQB" in expected):
+        return ("; words in a row are not an expression: write e.g. `agentInRoom(agent, red)` "
+                "(a command in words is for `bcc command`)")
+    return ""
 
 
 def _line_col(text: str, offset: int) -> tuple[int, int]:

@@ -467,6 +467,8 @@ FOREIGN = [
     ("ForAll b in block . p", (1, 1), "keywords are lowercase: write `forall`"),
     ("Exists b in block . p", (1, 1), "keywords are lowercase: write `exists`"),
     ("a.x IN [1]", (1, 5), "keywords are lowercase: write `in`"),
+    ("go to the red room", (1, 4), "words in a row are not an expression"),
+    ("agent in red room", (1, 10), "words in a row are not an expression"),
 ]
 
 
@@ -474,6 +476,11 @@ FOREIGN = [
 def test_spellings_from_other_languages_get_a_hint(text, where, hint):
     e = err(text)
     assert (e.line, e.col) == where and hint in e.message, e.message
+
+
+def test_a_value_then_a_name_is_not_taken_for_words():
+    assert "words in a row" not in err("a.x == 1 b").message
+    assert "words in a row" not in err("f(a) b").message
 
 
 def test_a_not_equal_is_not_taken_for_a_foreign_not():
