@@ -171,7 +171,7 @@ def command_cmd(dungeon, text, db, model_path, time_limit, max_memory, as_json):
         model = compile_model(dungeon, None)
         translation, source = _translation(db, model_path)   # may train a model: counted too
         space = space_for(dungeon)
-        found = rank(translation, space, model.initial, text)
+        found = rank(translation, space, model.initial, text, unseen_names_refused=True)
         if found.task is not None:
             found.result = plan(dungeon, found.task, None, deadline.remaining())
             if not found.result.solved:

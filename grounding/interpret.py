@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 from dataclasses import dataclass, field
 
 from ..model import Model
@@ -39,16 +40,24 @@ class Interpretation:
                 "cost": r.cost if r is not None and r.solved else None, "message": self.message}
 
 
-def rank(translation, space: TaskSpace, start: bytes, command: str) -> Interpretation:
+def rank(translation, space: TaskSpace, start: bytes, command: str, unseen_names_refused: bool = False) -> Interpretation:
     """Score every candidate task of the dungeon from `start` against the command.
 
     `translation` is a grounding model: the log-linear model (loglinear.py) or, from an
-    older model file, IBM Model 2 (translation.py)."""
+    older model file, IBM Model 2 (translation.py). With `unseen_names_refused`, a command
+    that names one of the tasks' things (an object, a room, a block type) with a word the
+    model never saw is not understood: the model was not trained for this dungeon, and its
+    best guess ignores the very word that says what to do (`bcc command` acts on it)."""
     e = translation.tokens(command)
     unknown = sorted({w for w, n in zip(words(command), e) if n not in translation.vocabulary})
     tasks = [t.text for t in space.tasks(start)]
     if not tasks:
         return Interpretation(command, None, [], unknown, "the dungeon offers no task from this start")
+    unseen = sorted(set(unknown) & _task_names(tasks)) if unseen_names_refused else []
+    if unseen:
+        return Interpretation(command, None, [], unknown,
+                              f"the model never saw {', '.join(map(repr, unseen))}, which this dungeon's tasks name: "
+                              "train it on commands for this dungeon (bcc train --pairs FILE)")
     scores = translation.log_posterior(command, tasks)
     chance = -math.log(len(tasks))
     posterior = sorted(((t, math.exp(s), s > chance + 1e-9 or len(tasks) == 1) for t, s in zip(tasks, scores)),
@@ -65,6 +74,12 @@ def rank(translation, space: TaskSpace, start: bytes, command: str) -> Interpret
         return Interpretation(command, None, [], unknown, "no task explains the command better than chance",
                               all_scores=posterior)
     return Interpretation(command, plausible[0][0], plausible[:TOP], unknown, all_scores=posterior)
+
+
+def _task_names(tasks: list) -> set:
+    """The lowercase names the tasks pass to their functions (agent, red, chair, ...)."""
+    return {name.lower() for t in tasks for args in re.findall(r"\(([^()]*)\)", t)
+            for name in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", args)}
 
 
 @functools.lru_cache(maxsize=64)

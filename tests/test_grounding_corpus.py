@@ -59,6 +59,19 @@ def test_command_falls_back_to_the_corpus_model(tmp_path, monkeypatch):
     assert r.exit_code == 0 and "task: agentHasBlock(agent, burlap_stone)" in r.output
 
 
+def test_command_naming_a_thing_the_model_never_saw_is_not_understood(tmp_path, monkeypatch):
+    # The shipped corpus has no chair: its model would ignore "chair" and guess from "blue
+    # room" (before, it answered agentInRoom(agent, red) and walked there).
+    monkeypatch.setenv("BCC_HOME", str(tmp_path))
+    r = CliRunner().invoke(main, ["command", "cleanup", "take the chair to the blue room", "--json"])
+    assert r.exit_code == 1, r.output
+    out = json.loads(r.output)
+    assert out["task"] is None and out["plan"] == [] and "chair" in out["message"] and "train" in out["message"]
+    # an unknown word that names nothing in the dungeon is still only ignored
+    r = CliRunner().invoke(main, ["command", "four_rooms", "walk into the green room quickly", "--json"])
+    assert r.exit_code == 0 and json.loads(r.output)["task"] == "agentInRoom(agent, green)"
+
+
 def _small_corpus(monkeypatch):
     """Three dungeons instead of nineteen (a quick corpus), and a demonstration refused for
     about a third of the starts, so that guesses made ahead by the parallel generator are
