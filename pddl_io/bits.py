@@ -97,6 +97,17 @@ def _flatten(node) -> list:
     return [node]
 
 
+def _atoms(node) -> list:
+    """The state variables an IR condition reads."""
+    if isinstance(node, ir.Var):
+        return [node.var]
+    if isinstance(node, ir.Not):
+        return _atoms(node.operand)
+    if isinstance(node, ir.BoolOp):
+        return [v for item in node.items for v in _atoms(item)]
+    return []
+
+
 class BitEmitter:
     def __init__(self, bit_of: dict):
         self.bit_of = bit_of     # StateVar -> atom number
@@ -107,22 +118,22 @@ class BitEmitter:
             m |= 1 << self.bit_of[v]
         return m
 
-    def cond(self, node) -> str:
-        """A Python expression, true when the IR condition holds in `s`."""
+    def cond(self, node, v: str = "s") -> str:
+        """A Python expression, true when the IR condition holds in the state named `v`."""
         conj = _flatten(node)
         if len(conj) != 1 or isinstance(node, ir.BoolOp) and node.op == "and":
-            return self.conjunction(conj)
+            return self.conjunction(conj, v)
         if isinstance(node, ir.Var):
-            return f"s & {self.mask([node.var]):#x}"
+            return f"{v} & {self.mask([node.var]):#x}"
         if isinstance(node, ir.Not):
-            return f"not ({self.cond(node.operand)})"
+            return f"not ({self.cond(node.operand, v)})"
         if isinstance(node, ir.BoolOp):
-            return "(" + " or ".join(f"({self.cond(c)})" for c in node.items) + ")" if node.items else "False"
+            return "(" + " or ".join(f"({self.cond(c, v)})" for c in node.items) + ")" if node.items else "False"
         if isinstance(node, ir.Const):
             return "True" if node.value else "False"
         raise TypeError(f"unexpected condition {type(node).__name__}")
 
-    def conjunction(self, conj: list) -> str:
+    def conjunction(self, conj: list, v: str = "s") -> str:
         """`conj` (IR conditions) all true: positive atoms as one mask, negated ones as another."""
         pos = [c.var for c in conj if isinstance(c, ir.Var)]
         neg = [c.operand.var for c in conj if isinstance(c, ir.Not) and isinstance(c.operand, ir.Var)]
@@ -131,11 +142,15 @@ class BitEmitter:
         parts = []
         if pos:
             m = self.mask(pos)
-            parts.append(f"s & {m:#x} == {m:#x}" if len(pos) > 1 else f"s & {m:#x}")
+            parts.append(f"{v} & {m:#x} == {m:#x}" if len(pos) > 1 else f"{v} & {m:#x}")
         if neg:
-            parts.append(f"not s & {self.mask(neg):#x}")
-        parts += [f"({self.cond(c)})" for c in rest]
+            parts.append(f"not {v} & {self.mask(neg):#x}")
+        parts += [f"({self.cond(c, v)})" for c in rest]
         return " and ".join(parts) if parts else "True"
+
+    def writes(self, effects) -> int:
+        """The mask of every atom `effects` may set or clear."""
+        return self.mask(w.var for e in effects for w in ((*e.then, *e.orelse) if isinstance(e, ir.When) else (e,)))
 
     def effects(self, effects) -> tuple[int, int, list]:
         """(delete mask, add mask, [(condition, delete mask, add mask)]) of an action's
@@ -157,25 +172,35 @@ class BitEmitter:
                 dels |= 1 << self.bit_of[e.var]
         return dels, adds, conditional
 
-    def successors_source(self, actions: list, fresh: bool = False, prob: dict | None = None) -> str:
-        """`successors(s)`: [(action, next state)]; or with `fresh`, `fresh(s, seen, out)`
-        (Model.search_fresh): each next state not yet a key of `seen` is stored there with
-        `s` and appended to `out`; it returns how many next states there were. With
-        `prob` (atom_shares of sampled states), the tree's tests are chosen by what
-        they prune (_tree_by_pruning)."""
+    def successors_source(self, actions: list, prob: dict | None = None, goal=None) -> str:
+        """`successors(s)`: [(action, next state)]; or, given the IR `goal`, a layer
+        expander `expand(states, seen, outs)` (Model.search_layers, one group): for each of
+        `states` (none a goal), each next state not yet a key of `seen` is stored there
+        with its parent and appended to `outs[0]`; it returns how many next states there
+        were, or at once the complement of that count when a new one is a goal (the last
+        of `outs[0]`). The goal is tested inline, only after actions that write an atom
+        it reads: any other action leaves it as false as in the parent. With `prob`
+        (atom_shares of sampled states), the tree's tests are chosen by what they prune
+        (_tree_by_pruning)."""
         keys = [[self.bit_of[c.var] for c in a.pre if isinstance(c, ir.Var)] for a in actions]
         root = _tree_by_frequency(keys) if prob is None else _tree_by_pruning(keys, prob)
-        if fresh:
-            lines = ["def fresh(s, seen, out):", "    add = out.append", "    k = 0"]
+        expand = goal is not None
+        if expand:
+            lines = ["def expand(states, seen, outs):", "    out = outs[0]", "    add = out.append", "    k = 0",
+                     "    for s in states:"]
+            goal_test = self.cond(goal, "t")
+            goal_mask = self.mask(_atoms(goal))
         else:
             lines = ["def successors(s):", "    out = []", "    add = out.append"]
 
         def put(i, nxt, indent):
-            if not fresh:
+            if not expand:
                 lines.append(f"{indent}add(({i}, {nxt}))")
                 return
             lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}if t not in seen:",
                           f"{indent}    seen[t] = s", f"{indent}    add(t)"])
+            if self.writes(actions[i].effects) & goal_mask:
+                lines.extend([f"{indent}    if {goal_test}:", f"{indent}        return ~k"])
 
         def leaf(i, used, indent):
             a = actions[i]
@@ -234,8 +259,10 @@ class BitEmitter:
                 lines.append(f"{indent}if s & {sum(1 << atom for atom, _ in group):#x}:")
                 split(group, used, indent + "    ")
 
-        emit(root, frozenset(), "    ")
-        lines.append("    return k" if fresh else "    return out")
+        emit(root, frozenset(), "        " if expand else "    ")
+        if expand and lines[-1] == "    for s in states:":
+            lines.append("        pass")     # no actions
+        lines.append("    return k" if expand else "    return out")
         return "\n".join(lines)
 
     def predicate_source(self, name: str, node) -> str:

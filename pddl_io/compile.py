@@ -76,7 +76,8 @@ SAMPLE_STATES = 2000
 
 
 def build_functions(layout, actions: list, goal, initial: int = 0) -> tuple[dict, str]:
-    """Generated `successors`, `fresh` (Model.search_fresh) and `goal` over int states (bits.py), and their source.
+    """Generated `successors`, `goal` and the layer expander `expand` (Model.search_layers,
+    for breadth-first and blind search) over int states (bits.py), and their source.
     One action at a time (`apply_fns`, `why_fns`: replaying and explaining plans) reads
     the ground task instead (`action_functions`): compiling a function per action would
     cost more than the search on most IPC problems."""
@@ -86,11 +87,11 @@ def build_functions(layout, actions: list, goal, initial: int = 0) -> tuple[dict
     exec(compile("\n\n".join(parts) + "\n", "<bcc pddl model>", "exec"), ns)
     prob = None
     if len(actions) >= SAMPLED_TREE_ACTIONS:
-        # Blind search's `fresh` tests first what prunes most in the states of a short
+        # Blind search's `expand` tests first what prunes most in the states of a short
         # breadth-first sample (bits._tree_by_pruning): freecell p3 23 % faster a state,
         # barman 5 %.
         prob = atom_shares(_sample(ns["successors"], initial))
-    parts.insert(1, em.successors_source(actions, fresh=True, prob=prob))
+    parts.insert(1, em.successors_source(actions, prob=prob, goal=goal))
     exec(compile(parts[1], "<bcc pddl model>", "exec"), ns)
     ns["failure"] = _never
     return ns, "\n\n".join(parts) + "\n"
@@ -162,14 +163,13 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
         name=task.name, path=path, goal_text=formula_text(task.goal, task),
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["successors"],  # no failure states
-        fresh_successors=ns["fresh"],
         apply_fns=tuple(f[0] for f in fns), why_fns=tuple(f[1] for f in fns),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"],
         variables=tuple(Variable(v.owner, i, 0, 1, "bool") for i, v in enumerate(var_of)),
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),
         goal_positions=None, report=report, source=source, search_actions=tuple(range(len(actions))),
-        lazy={"ground_task": lambda: task, "ir": lambda: (actions, goal), "pddl_files": lambda: files,
+        lazy={"ground_task": lambda: task, "layer_expanders": lambda: (ns["expand"],), "ir": lambda: (actions, goal), "pddl_files": lambda: files,
               "relaxed_task": functools.partial(_relaxed_once, task, {})})
 
 

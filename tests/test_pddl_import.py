@@ -122,24 +122,37 @@ def test_generated_successors_agree_with_the_ground_task_interpreter(problem, tr
     # The generated bit code (pddl_io/bits.py) against compile.action_functions, which
     # interprets the ground formulas one atom at a time: same successors in every
     # reachable state (conditional effects, negative preconditions and `or` included).
-    # Blind search's `fresh` is built from a sampled tree on big tasks: forced here.
+    # Blind search's `expand` is built from a sampled tree on big tasks: forced here.
     from bcc.pddl_io import compile as pddl_compile
     monkeypatch.setattr(pddl_compile, "SAMPLED_TREE_ACTIONS", 0 if tree == "by pruning" else 10 ** 9)
     monkeypatch.setattr(pddl_compile, "SAMPLE_STATES", 5)     # a sample of a few states only
     model = load(problem)
+    (expand,) = model.search_layers()
     seen, todo = {model.initial}, [model.initial]
+    goals = 0
     while todo:
         s = todo.pop()
         expected = [(a, n) for a in range(len(model.action_names)) if (n := model.apply_fns[a](s)) is not None]
         assert sorted(model.successors(s)) == sorted(expected)
-        parents, out = {s: None}, []       # the fused duplicate check (Model.search_fresh)
-        assert model.search_fresh()(s, parents, out) == len(expected)
-        assert sorted(out) == sorted({n for _, n in expected} - {s}) and all(parents[n] == s for n in out)
+        if not model.is_goal(s):   # the layer expander (one group), handed only non-goal states
+            old = {t: "old" for t in list(seen)[::3] if t != s}
+            parents, outs = {s: None, **old}, [[]]
+            k = expand([s], parents, outs)
+            new = list(dict.fromkeys(n for _, n in expected if n != s and n not in old))
+            if any(model.is_goal(n) for n in new):
+                # stopped at the first new goal, made last; nothing after it stored
+                goals += 1
+                assert k < 0 and 1 <= ~k <= len(expected)
+                assert model.is_goal(outs[0][-1]) and not any(map(model.is_goal, outs[0][:-1]))
+                assert len(set(outs[0])) == len(outs[0]) and set(outs[0]) <= set(new)
+            else:
+                assert k == len(expected) and sorted(outs[0]) == sorted(new)
+            assert all(parents[n] == s for n in outs[0]) and len(parents) == 1 + len(old) + len(outs[0])
         for _, n in expected:
             if n not in seen:
                 seen.add(n)
                 todo.append(n)
-    assert len(seen) >= 3
+    assert len(seen) >= 3 and goals
 
 
 def test_the_pruning_tree_tests_rarely_true_atoms_first():
