@@ -172,20 +172,30 @@ class BitEmitter:
                 dels |= 1 << self.bit_of[e.var]
         return dels, adds, conditional
 
-    def successors_source(self, actions: list, prob: dict | None = None, goal=None) -> str:
+    def successors_source(self, actions: list, prob: dict | None = None, goal=None, costs: list | None = None) -> str:
         """`successors(s)`: [(action, next state)]; or, given the IR `goal`, a layer
         expander `expand(states, seen, outs)` (Model.search_layers, one group): for each of
         `states` (none a goal), each next state not yet a key of `seen` is stored there
         with its parent and appended to `outs[0]`; it returns how many next states there
         were, or at once the complement of that count when a new one is a goal (the last
         of `outs[0]`). The goal is tested inline, only after actions that write an atom
-        it reads: any other action leaves it as false as in the parent. With `prob`
-        (atom_shares of sampled states), the tree's tests are chosen by what they prune
-        (_tree_by_pruning)."""
+        it reads: any other action leaves it as false as in the parent. Or, given the
+        actions' `costs`, `expand_costs(states, g, nodes, outs)` for a search by cost
+        (solvers/uniform_cost.py): `states` all cost g; a next state t made by an action
+        of the r-th smallest distinct cost c is stored as `nodes[t] = (g + c, s)` and
+        appended to `outs[r]` unless `nodes` has it at g + c or less; it returns how many
+        next states there were. With `prob` (atom_shares of sampled states), the tree's
+        tests are chosen by what they prune (_tree_by_pruning)."""
         keys = [[self.bit_of[c.var] for c in a.pre if isinstance(c, ir.Var)] for a in actions]
         root = _tree_by_frequency(keys) if prob is None else _tree_by_pruning(keys, prob)
-        expand = goal is not None
-        if expand:
+        expand = goal is not None or costs is not None
+        if costs is not None:
+            rank = {c: r for r, c in enumerate(sorted(set(costs)))}
+            lines = ["def expand_costs(states, g, nodes, outs):", "    get = nodes.get", "    k = 0"]
+            for c, r in rank.items():
+                lines += [f"    o{r} = outs[{r}].append", f"    g{r} = g + {int(c)}"]
+            lines.append("    for s in states:")
+        elif expand:
             lines = ["def expand(states, seen, outs):", "    out = outs[0]", "    add = out.append", "    k = 0",
                      "    for s in states:"]
             goal_test = self.cond(goal, "t")
@@ -196,6 +206,12 @@ class BitEmitter:
         def put(i, nxt, indent):
             if not expand:
                 lines.append(f"{indent}add(({i}, {nxt}))")
+                return
+            if costs is not None:
+                r = rank[costs[i]]
+                lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}old = get(t)",
+                              f"{indent}if old is None or old[0] > g{r}:",
+                              f"{indent}    nodes[t] = (g{r}, s)", f"{indent}    o{r}(t)"])
                 return
             lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}if t not in seen:",
                           f"{indent}    seen[t] = s", f"{indent}    add(t)"])
@@ -260,7 +276,7 @@ class BitEmitter:
                 split(group, used, indent + "    ")
 
         emit(root, frozenset(), "        " if expand else "    ")
-        if expand and lines[-1] == "    for s in states:":
+        if lines[-1] == "    for s in states:":
             lines.append("        pass")     # no actions
         lines.append("    return k" if expand else "    return out")
         return "\n".join(lines)

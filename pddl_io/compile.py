@@ -73,27 +73,41 @@ def to_ir(task: GroundTask):
 
 SAMPLED_TREE_ACTIONS = 400   # tasks with this many actions get blind search's tree from a sample
 SAMPLE_STATES = 2000
+MAX_COST_LEVELS = 256         # distinct action costs a search by cost keeps apart (one local each)
 
 
 def build_functions(layout, actions: list, goal, initial: int = 0) -> tuple[dict, str]:
     """Generated `successors`, `goal` and the layer expander `expand` (Model.search_layers,
-    for breadth-first and blind search) over int states (bits.py), and their source.
-    One action at a time (`apply_fns`, `why_fns`: replaying and explaining plans) reads
-    the ground task instead (`action_functions`): compiling a function per action would
-    cost more than the search on most IPC problems."""
+    for breadth-first and blind search) over int states (bits.py), and their source; and
+    `cost_expander()`, which compiles on first use the expander of a blind search by cost
+    (solvers/uniform_cost.py; None when every action costs the same). One action at a
+    time (`apply_fns`, `why_fns`: replaying and explaining plans) reads the ground task
+    instead (`action_functions`): compiling a function per action would cost more than
+    the search on most IPC problems."""
     em = BitEmitter({s.var: s.index for s in layout.slots})
     parts = [em.successors_source(actions), em.predicate_source("goal", goal)]
     ns: dict = {}
     exec(compile("\n\n".join(parts) + "\n", "<bcc pddl model>", "exec"), ns)
     prob = None
     if len(actions) >= SAMPLED_TREE_ACTIONS:
-        # Blind search's `expand` tests first what prunes most in the states of a short
+        # Blind search's expanders test first what prunes most in the states of a short
         # breadth-first sample (bits._tree_by_pruning): freecell p3 23 % faster a state,
         # barman 5 %.
         prob = atom_shares(_sample(ns["successors"], initial))
     parts.insert(1, em.successors_source(actions, prob=prob, goal=goal))
     exec(compile(parts[1], "<bcc pddl model>", "exec"), ns)
     ns["failure"] = _never
+    costs = [a.cost for a in actions]
+
+    @functools.lru_cache(maxsize=1)
+    def cost_expander():
+        if len(set(costs)) <= 1 or len(set(costs)) > MAX_COST_LEVELS \
+                or not all(type(c) is int and c >= 0 for c in costs):
+            return None
+        made: dict = {}
+        exec(compile(em.successors_source(actions, prob=prob, costs=costs), "<bcc pddl model>", "exec"), made)
+        return made["expand_costs"], tuple(sorted(set(costs)))
+    ns["cost_expander"] = cost_expander
     return ns, "\n\n".join(parts) + "\n"
 
 
@@ -169,7 +183,8 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
         variables=tuple(Variable(v.owner, i, 0, 1, "bool") for i, v in enumerate(var_of)),
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),
         goal_positions=None, report=report, source=source, search_actions=tuple(range(len(actions))),
-        lazy={"ground_task": lambda: task, "layer_expanders": lambda: (ns["expand"],), "ir": lambda: (actions, goal), "pddl_files": lambda: files,
+        lazy={"ground_task": lambda: task, "layer_expanders": lambda: (ns["expand"],),
+              "cost_expander": ns["cost_expander"], "ir": lambda: (actions, goal), "pddl_files": lambda: files,
               "relaxed_task": functools.partial(_relaxed_once, task, {})})
 
 

@@ -58,6 +58,9 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     zero = used == "blind"
     if zero and len(set(model.action_costs)) <= 1:
         return _layered(model, meter, name)
+    if zero and model.data("cost_expander"):   # a generated search by cost (imported PDDL)
+        from .uniform_cost import uniform_cost
+        return uniform_cost(model, meter, name, *model.data("cost_expander"))
     start = model.initial
     h0 = h(start)
     # One map for everything known about a state: (g, parent state, action). A state is

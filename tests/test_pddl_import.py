@@ -72,6 +72,40 @@ def test_sokoban_moves_are_free_and_pushes_cost_one():
     assert result.cost == 2 and len(result.plan) == 3
 
 
+@pytest.mark.parametrize("problem", ["road-1", "sokoban-corridor"])
+def test_blind_search_by_cost_matches_the_general_astar_loop(problem):
+    # Costs differ (road: 1 and 10; sokoban: moves 0, pushes 1): blind A* runs the
+    # generated search by cost (solvers/uniform_cost.py); without it, A*'s general loop.
+    # Both find the hand-derived optimum; the general loop is the independent check.
+    import dataclasses
+    model = load(problem)
+    assert model.data("cost_expander") is not None
+    general = dataclasses.replace(model, lazy={k: v for k, v in model.lazy.items() if k != "cost_expander"})
+    by_cost = get_solver("astar")(model, Budget(time_limit=60), heuristic="blind")
+    plain = get_solver("astar")(general, Budget(time_limit=60), heuristic="blind")
+    assert by_cost.solved and by_cost.cost == plain.cost == HAND_COSTS[problem][1]
+    end, cost = replay(model, by_cost.plan)
+    assert model.is_goal(end) and cost == by_cost.cost
+    # every state stored at its cheapest cost: the generic loop stores the same states
+    assert by_cost.stored <= plain.stored + len(model.action_names)
+
+
+def test_search_by_cost_stops_at_the_state_budget_and_proves_no_plan(tmp_path):
+    from bcc.solvers.base import Meter
+    from bcc.solvers.uniform_cost import uniform_cost
+    model = load("sokoban-corridor")
+    expander, levels = model.data("cost_expander")
+    assert levels == (0, 1)
+    stopped = uniform_cost(model, Meter(Budget(max_states=3)), "astar", expander, levels)
+    assert not stopped.solved and stopped.budget == "max_states" and stopped.stored <= 3 + len(model.action_names)
+    # the goal made unreachable (at c and at a at once): the three states explored, no plan
+    text = (HERE / "road-1.pddl").read_text().replace("(:goal (at c))", "(:goal (and (at c) (at a)))")
+    (tmp_path / "p.pddl").write_text(text)
+    road = import_pddl(str(HERE / "road-domain.pddl"), str(tmp_path / "p.pddl"))
+    none = uniform_cost(road, Meter(Budget()), "astar", *road.data("cost_expander"))
+    assert not none.solved and none.status == "no_solution" and none.stored == 3
+
+
 def test_without_a_metric_every_action_costs_one(tmp_path):
     text = (HERE / "road-1.pddl").read_text().replace("(:metric minimize (total-cost))", "")
     (tmp_path / "p.pddl").write_text(text)
