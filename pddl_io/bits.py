@@ -1,4 +1,4 @@
-"""Python source for an imported task's IR, with a state as one int: bit i is atom i.
+"""Python source for an imported task (ground.py), with a state as one int: bit i is atom i.
 
 Why an int and not one byte per atom: an action is then `s & ~deletes | adds`, two
 integer operations instead of copying a bytearray, writing each changed byte and
@@ -12,12 +12,16 @@ Successors are a decision tree (Fast Downward's successor generator): actions ar
 grouped under a test of a positive precondition atom they share, most frequent first,
 so a state only looks at actions whose first atoms hold. Only numbers (hexadecimal
 masks and action indices) reach the source: no text from the PDDL files.
+
+The input is the ground task itself (formulas over atom numbers: an int, ("not", f),
+("and", fs), ("or", fs), ("true",), ("false",)), not bcc's IR: importing the IR's
+classes cost about a tenth of a small problem's whole run.
 """
 from __future__ import annotations
 
 from collections import Counter
 
-from ..compiler import ir
+TRUE = ("true",)
 
 MAX_DEPTH = 40     # atoms on a path of the decision tree
 MAX_NESTING = 80   # Python's parser allows 100 levels of indentation: groups stop at 80
@@ -88,89 +92,89 @@ def atom_shares(states: list) -> dict:
     return {a: c / len(states) for a, c in count.items()}
 
 
-def _flatten(node) -> list:
-    """The conjuncts of an IR condition."""
-    if isinstance(node, ir.BoolOp) and node.op == "and":
-        return [c for item in node.items for c in _flatten(item)]
-    if node == ir.TRUE:
+def _flatten(f) -> list:
+    """The conjuncts of a ground formula."""
+    if isinstance(f, tuple) and f[0] == "and":
+        return [c for item in f[1] for c in _flatten(item)]
+    if f == TRUE:
         return []
-    return [node]
+    return [f]
 
 
-def _atoms(node) -> list:
-    """The state variables an IR condition reads."""
-    if isinstance(node, ir.Var):
-        return [node.var]
-    if isinstance(node, ir.Not):
-        return _atoms(node.operand)
-    if isinstance(node, ir.BoolOp):
-        return [v for item in node.items for v in _atoms(item)]
+def _atoms(f) -> list:
+    """The atoms a ground formula reads."""
+    if isinstance(f, int):
+        return [f]
+    if f[0] == "not":
+        return _atoms(f[1])
+    if f[0] in ("and", "or"):
+        return [a for g in f[1] for a in _atoms(g)]
     return []
 
 
+def _negated_atom(c) -> bool:
+    return isinstance(c, tuple) and c[0] == "not" and isinstance(c[1], int)
+
+
+def mask(atoms) -> int:
+    m = 0
+    for a in atoms:
+        m |= 1 << a
+    return m
+
+
 class BitEmitter:
-    def __init__(self, bit_of: dict):
-        self.bit_of = bit_of     # StateVar -> atom number
-
-    def mask(self, variables) -> int:
-        m = 0
-        for v in variables:
-            m |= 1 << self.bit_of[v]
-        return m
-
-    def cond(self, node, v: str = "s") -> str:
-        """A Python expression, true when the IR condition holds in the state named `v`."""
-        conj = _flatten(node)
-        if len(conj) != 1 or isinstance(node, ir.BoolOp) and node.op == "and":
-            return self.conjunction(conj, v)
-        if isinstance(node, ir.Var):
-            return f"{v} & {self.mask([node.var]):#x}"
-        if isinstance(node, ir.Not):
-            return f"not ({self.cond(node.operand, v)})"
-        if isinstance(node, ir.BoolOp):
-            return "(" + " or ".join(f"({self.cond(c, v)})" for c in node.items) + ")" if node.items else "False"
-        if isinstance(node, ir.Const):
-            return "True" if node.value else "False"
-        raise TypeError(f"unexpected condition {type(node).__name__}")
+    def cond(self, f, v: str = "s") -> str:
+        """A Python expression, true when the ground formula `f` holds in the state named `v`."""
+        if isinstance(f, int):
+            return f"{v} & {1 << f:#x}"
+        kind = f[0]
+        if kind == "and":
+            return self.conjunction(_flatten(f), v)
+        if kind == "not":
+            return f"not ({self.cond(f[1], v)})"
+        if kind == "or":
+            return "(" + " or ".join(f"({self.cond(g, v)})" for g in f[1]) + ")" if f[1] else "False"
+        if kind in ("true", "false"):
+            return "True" if kind == "true" else "False"
+        raise TypeError(f"unexpected formula {kind!r}")
 
     def conjunction(self, conj: list, v: str = "s") -> str:
-        """`conj` (IR conditions) all true: positive atoms as one mask, negated ones as another."""
-        pos = [c.var for c in conj if isinstance(c, ir.Var)]
-        neg = [c.operand.var for c in conj if isinstance(c, ir.Not) and isinstance(c.operand, ir.Var)]
-        rest = [c for c in conj if not isinstance(c, ir.Var) and not (isinstance(c, ir.Not)
-                                                                      and isinstance(c.operand, ir.Var))]
+        """`conj` (ground formulas) all true: positive atoms as one mask, negated ones as another."""
+        pos = [c for c in conj if isinstance(c, int)]
+        neg = [c[1] for c in conj if _negated_atom(c)]
+        rest = [c for c in conj if not isinstance(c, int) and not _negated_atom(c)]
         parts = []
         if pos:
-            m = self.mask(pos)
+            m = mask(pos)
             parts.append(f"{v} & {m:#x} == {m:#x}" if len(pos) > 1 else f"{v} & {m:#x}")
         if neg:
-            parts.append(f"not {v} & {self.mask(neg):#x}")
+            parts.append(f"not {v} & {mask(neg):#x}")
         parts += [f"({self.cond(c, v)})" for c in rest]
         return " and ".join(parts) if parts else "True"
 
     def writes(self, effects) -> int:
-        """The mask of every atom `effects` may set or clear."""
-        return self.mask(w.var for e in effects for w in ((*e.then, *e.orelse) if isinstance(e, ir.When) else (e,)))
+        """The mask of every atom `effects` (a ground action's) may set or clear."""
+        return mask(atom for _, atom, _ in effects)
 
     def effects(self, effects) -> tuple[int, int, list]:
-        """(delete mask, add mask, [(condition, delete mask, add mask)]) of an action's
-        effects: unconditional `SetVar`s and `When`s of `SetVar`s."""
+        """(delete mask, add mask, [(condition, delete mask, add mask)]) of a ground
+        action's effects [(condition, atom, add?)]: an atom both deleted and added holds."""
         dels = adds = 0
-        conditional = []
-        for e in effects:
-            if isinstance(e, ir.When):
-                d = a = 0
-                for w in e.then:
-                    if w.value.value:
-                        a |= 1 << self.bit_of[w.var]
-                    else:
-                        d |= 1 << self.bit_of[w.var]
-                conditional.append((self.cond(e.cond), d, a))
-            elif e.value.value:
-                adds |= 1 << self.bit_of[e.var]
-            else:
-                dels |= 1 << self.bit_of[e.var]
-        return dels, adds, conditional
+        conditional: list = []     # [[condition, delete mask, add mask]], one per distinct condition
+        for cond, atom, add in effects:
+            if cond == TRUE:
+                if add:
+                    adds |= 1 << atom
+                else:
+                    dels |= 1 << atom
+                continue
+            entry = next((e for e in conditional if e[0] == cond), None)
+            if entry is None:
+                entry = [cond, 0, 0]
+                conditional.append(entry)
+            entry[2 if add else 1] |= 1 << atom
+        return dels, adds, [(self.cond(c), d, a) for c, d, a in conditional]
 
     def successors_source(self, actions: list, prob: dict | None = None, goal=None, costs: list | None = None) -> str:
         """`successors(s)`: [(action, next state)]; or, given the IR `goal`, a layer
@@ -186,7 +190,8 @@ class BitEmitter:
         appended to `outs[r]` unless `nodes` has it at g + c or less; it returns how many
         next states there were. With `prob` (atom_shares of sampled states), the tree's
         tests are chosen by what they prune (_tree_by_pruning)."""
-        keys = [[self.bit_of[c.var] for c in a.pre if isinstance(c, ir.Var)] for a in actions]
+        conjs = [_flatten(a.pre) for a in actions]
+        keys = [[c for c in conj if isinstance(c, int)] for conj in conjs]
         root = _tree_by_frequency(keys) if prob is None else _tree_by_pruning(keys, prob)
         expand = goal is not None or costs is not None
         if costs is not None:
@@ -199,7 +204,7 @@ class BitEmitter:
             lines = ["def expand(states, seen, outs):", "    out = outs[0]", "    add = out.append", "    k = 0",
                      "    for s in states:"]
             goal_test = self.cond(goal, "t")
-            goal_mask = self.mask(_atoms(goal))
+            goal_mask = mask(_atoms(goal))
         else:
             lines = ["def successors(s):", "    out = []", "    add = out.append"]
 
@@ -220,7 +225,7 @@ class BitEmitter:
 
         def leaf(i, used, indent):
             a = actions[i]
-            rest = [c for c in a.pre if not (isinstance(c, ir.Var) and self.bit_of[c.var] in used)]
+            rest = [c for c in conjs[i] if not (isinstance(c, int) and c in used)]
             if rest:
                 lines.append(f"{indent}if {self.conjunction(rest)}:")
                 indent += "    "

@@ -1,34 +1,18 @@
-"""Compile a ground PDDL task (ground.py) into bcc's IR, then into a `Model`.
+"""Compile a ground PDDL task (ground.py) into a `Model`.
 
-Why the IR: an imported problem then is a model like any compiled dungeon: one boolean
-state variable per atom, preconditions and goal are IR conditions (`Var`, `Not`,
-`BoolOp`), effects are `SetVar` (under `When` for conditional effects). bits.py turns
-them into Python over int states (bit i is atom i), which is faster than compiler/emit.py's
-byte-per-variable states for tasks made only of booleans. PDDL semantics: conditions read
-the state before the action, deletes apply before adds. The generated code holds only
-numbers: no text from the PDDL files reaches it.
+An imported problem is a model like any compiled dungeon, with one boolean state
+variable per atom; bits.py turns the ground formulas and effects into Python over int
+states (bit i is atom i), which is faster than compiler/emit.py's byte-per-variable
+states for tasks made only of booleans. PDDL semantics: conditions read the state before
+the action, deletes apply before adds. The generated code holds only numbers: no text
+from the PDDL files reaches it.
 """
 from __future__ import annotations
 
 import functools
 
-from ..compiler import ir
-from ..compiler.emit import GroundAction
-from ..compiler.layout import Layout, Slot
 from .bits import BitEmitter, atom_shares
 from .ground import GroundTask
-
-def formula_ir(f, var_of):
-    if isinstance(f, int):
-        return ir.Var(var_of[f])
-    kind = f[0]
-    if kind == "true":
-        return ir.TRUE
-    if kind == "false":
-        return ir.FALSE
-    if kind == "not":
-        return ir.Not(formula_ir(f[1], var_of))
-    return ir.BoolOp(kind, tuple(formula_ir(s, var_of) for s in f[1]))
 
 
 def formula_text(f, task: GroundTask) -> str:
@@ -50,33 +34,12 @@ def _conjuncts(f) -> list:
     return [f]
 
 
-def to_ir(task: GroundTask):
-    """(layout, state variables, IR actions, IR goal)."""
-    var_of = [ir.StateVar(task.atom_text(i), "atom", "holds", "bool") for i in range(len(task.atoms))]
-    slots = [Slot(v, i, 0, 1) for i, v in enumerate(var_of)]
-    n = len(slots)
-    layout = Layout(slots, {s.var: s for s in slots}, {}, 0, 0, 0, n, (), b"", 0)
-    actions = []
-    for a in task.actions:
-        conj = _conjuncts(a.pre)
-        effects = []
-        for add in (False, True):   # deletes first, then adds: an atom both deleted and added stays true
-            for cond, atom, is_add in a.effects:
-                if is_add != add:
-                    continue
-                write = ir.SetVar(var_of[atom], ir.Const(add, "bool"))
-                effects.append(write if cond == ("true",) else ir.When(formula_ir(cond, var_of), (write,), ()))
-        actions.append(GroundAction(a.name, a.cost, [], [formula_ir(c, var_of) for c in conj],
-                                    [formula_text(c, task) for c in conj], tuple(effects)))
-    return layout, var_of, actions, formula_ir(task.goal, var_of)
-
-
 SAMPLED_TREE_ACTIONS = 400   # tasks with this many actions get blind search's tree from a sample
 SAMPLE_STATES = 2000
 MAX_COST_LEVELS = 256         # distinct action costs a search by cost keeps apart (one local each)
 
 
-def build_functions(layout, actions: list, goal, initial: int = 0) -> tuple[dict, str]:
+def build_functions(actions: list, goal, initial: int = 0) -> tuple[dict, str]:
     """Generated `successors`, `goal` and the layer expander `expand` (Model.search_layers,
     for breadth-first and blind search) over int states (bits.py), and their source; and
     `cost_expander()`, which compiles on first use the expander of a blind search by cost
@@ -84,7 +47,7 @@ def build_functions(layout, actions: list, goal, initial: int = 0) -> tuple[dict
     time (`apply_fns`, `why_fns`: replaying and explaining plans) reads the ground task
     instead (`action_functions`): compiling a function per action would cost more than
     the search on most IPC problems."""
-    em = BitEmitter({s.var: s.index for s in layout.slots})
+    em = BitEmitter()
     parts = [em.successors_source(actions), em.predicate_source("goal", goal)]
     ns: dict = {}
     exec(compile("\n\n".join(parts) + "\n", "<bcc pddl model>", "exec"), ns)
@@ -168,23 +131,23 @@ def action_functions(a) -> tuple:
 
 def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
     from ..model import Grid, Model, Variable
-    layout, var_of, actions, goal = to_ir(task)
+    actions = task.actions
     initial = sum(1 << i for i in task.initial)   # an int: bit i is atom i (bits.py)
-    ns, source = build_functions(layout, actions, goal, initial)
-    fns = [action_functions(a) for a in task.actions]
-    n = len(var_of)
+    ns, source = build_functions(actions, task.goal, initial)
+    fns = [action_functions(a) for a in actions]
+    n = len(task.atoms)
     return Model(
         name=task.name, path=path, goal_text=formula_text(task.goal, task),
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["successors"],  # no failure states
         apply_fns=tuple(f[0] for f in fns), why_fns=tuple(f[1] for f in fns),
-        pre_texts=tuple(tuple(a.pre_text) for a in actions),
+        pre_texts=tuple(tuple(formula_text(c, task) for c in _conjuncts(a.pre)) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"],
-        variables=tuple(Variable(v.owner, i, 0, 1, "bool") for i, v in enumerate(var_of)),
+        variables=tuple(Variable(task.atom_text(i), i, 0, 1, "bool") for i in range(n)),
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),
         goal_positions=None, report=report, source=source, search_actions=tuple(range(len(actions))),
         lazy={"ground_task": lambda: task, "layer_expanders": lambda: (ns["expand"],),
-              "cost_expander": ns["cost_expander"], "ir": lambda: (actions, goal), "pddl_files": lambda: files,
+              "cost_expander": ns["cost_expander"], "pddl_files": lambda: files,
               "relaxed_task": functools.partial(_relaxed_once, task, {})})
 
 
