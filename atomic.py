@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import errno
 import os
-import tempfile
 from pathlib import Path
 
 from .errors import BccError
@@ -29,6 +28,7 @@ def _cannot(path: Path, exc: OSError) -> BccError:
 
 def _temporary(path: Path) -> tuple[int, str]:
     """A new named temporary file beside `path` (fd, name); BccError if the folder cannot take one."""
+    import tempfile    # only where unnamed files are not offered: 3 ms of every command's start-up
     try:
         return tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=_folder(path))
     except OSError as exc:

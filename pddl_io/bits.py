@@ -153,6 +153,22 @@ class BitEmitter:
         parts += [f"({self.cond(c, v)})" for c in rest]
         return " and ".join(parts) if parts else "True"
 
+    def positive_mask(self, action) -> int:
+        """The atoms an action's precondition needs true (its top-level conjunction's)."""
+        return mask(c for c in _flatten(action.pre) if isinstance(c, int))
+
+    def tree_order(self, actions: list) -> list:
+        """The actions in the order `successors` (by frequency) lists their next states."""
+        root = _tree_by_frequency([[c for c in _flatten(a.pre) if isinstance(c, int)] for a in actions])
+        out: list = []
+
+        def walk(node):
+            out.extend(node.get(None, ()))
+            for atom in sorted(a for a in node if a is not None):
+                walk(node[atom])
+        walk(root)
+        return out
+
     def writes(self, effects) -> int:
         """The mask of every atom `effects` (a ground action's) may set or clear."""
         return mask(atom for _, atom, _ in effects)

@@ -35,31 +35,37 @@ def _conjuncts(f) -> list:
 
 
 SAMPLED_TREE_ACTIONS = 400   # tasks with this many actions get blind search's tree from a sample
-SAMPLE_STATES = 2000
+SAMPLE_STATES = 2000          # of the first states blind search expands
+PRUNED_TREE_AFTER = 50_000    # expansions before blind search's sampled tree is built
+INTERPRETED_CALLS = 64        # `successors` calls answered by the ground task before it is compiled
 MAX_COST_LEVELS = 256         # distinct action costs a search by cost keeps apart (one local each)
 
 
-def build_functions(actions: list, goal, initial: int = 0) -> tuple[dict, str]:
-    """Generated `successors`, `goal` and the layer expander `expand` (Model.search_layers,
-    for breadth-first and blind search) over int states (bits.py), and their source; and
-    `cost_expander()`, which compiles on first use the expander of a blind search by cost
-    (solvers/uniform_cost.py; None when every action costs the same). One action at a
-    time (`apply_fns`, `why_fns`: replaying and explaining plans) reads the ground task
-    instead (`action_functions`): compiling a function per action would cost more than
-    the search on most IPC problems."""
+def build_functions(actions: list, goal) -> tuple[dict, str]:
+    """Generated `goal` and the layer expander `expand` (Model.search_layers, for
+    breadth-first and blind search) over int states (bits.py), and their source; and,
+    compiled only when first needed, `successors` and `cost_expander()` (the expander of
+    a blind search by cost, solvers/uniform_cost.py; None when every action costs the
+    same). One action at a time (`apply_fns`, `why_fns`: replaying and explaining plans)
+    reads the ground task instead (`action_functions`).
+
+    Why so lazy: Python compiles a tree of thousands of actions in 0.1-0.3 s, more than
+    the whole search on most IPC problems blind search solves (grid p01: 0.40 s to build
+    the model with two trees compiled, the search 0.1 s). So `successors` answers its
+    first INTERPRETED_CALLS calls (a plan's steps, LM-cut's first states) from the ground
+    task, in the tree's order, and is compiled on the next one; and on tasks with
+    SAMPLED_TREE_ACTIONS actions or more, blind search starts on the tree by frequency and
+    after PRUNED_TREE_AFTER expansions moves to one whose tests prune most in the first
+    SAMPLE_STATES states it expanded (bits._tree_by_pruning: freecell p3 23 % faster a
+    state, barman 5 %)."""
     em = BitEmitter()
-    parts = [em.successors_source(actions), em.predicate_source("goal", goal)]
+    parts = [em.predicate_source("goal", goal), em.successors_source(actions, goal=goal)]
     ns: dict = {}
     exec(compile("\n\n".join(parts) + "\n", "<bcc pddl model>", "exec"), ns)
-    prob = None
-    if len(actions) >= SAMPLED_TREE_ACTIONS:
-        # Blind search's expanders test first what prunes most in the states of a short
-        # breadth-first sample (bits._tree_by_pruning): freecell p3 23 % faster a state,
-        # barman 5 %.
-        prob = atom_shares(_sample(ns["successors"], initial))
-    parts.insert(1, em.successors_source(actions, prob=prob, goal=goal))
-    exec(compile(parts[1], "<bcc pddl model>", "exec"), ns)
     ns["failure"] = _never
+    ns["expand"] = _sampling_expander(em, actions, goal, ns["expand"]) if len(actions) >= SAMPLED_TREE_ACTIONS \
+        else ns["expand"]
+    ns["successors"] = _lazy_successors(em, actions)
     costs = [a.cost for a in actions]
 
     @functools.lru_cache(maxsize=1)
@@ -68,24 +74,52 @@ def build_functions(actions: list, goal, initial: int = 0) -> tuple[dict, str]:
                 or not all(type(c) is int and c >= 0 for c in costs):
             return None
         made: dict = {}
-        exec(compile(em.successors_source(actions, prob=prob, costs=costs), "<bcc pddl model>", "exec"), made)
+        exec(compile(em.successors_source(actions, costs=costs), "<bcc pddl model>", "exec"), made)
         return made["expand_costs"], tuple(sorted(set(costs)))
     ns["cost_expander"] = cost_expander
     return ns, "\n\n".join(parts) + "\n"
 
 
-def _sample(successors, initial: int) -> list:
-    """Up to SAMPLE_STATES states, breadth first from `initial`."""
-    seen = {initial}
-    states = [initial]
-    for s in states:
-        if len(states) >= SAMPLE_STATES:
-            break
-        for _, t in successors(s):
-            if t not in seen:
-                seen.add(t)
-                states.append(t)
-    return states[:SAMPLE_STATES]
+def _lazy_successors(em: BitEmitter, actions: list):
+    """`successors(s)` (see build_functions): interpreted, then compiled."""
+    order = em.tree_order(actions)
+    checks = [(a, em.positive_mask(actions[a]), action_functions(actions[a])[0]) for a in order]
+    compiled: list = []
+    calls = [0]
+
+    def successors(s):
+        if compiled:
+            return compiled[0](s)
+        calls[0] += 1
+        if calls[0] <= INTERPRETED_CALLS:
+            return [(a, n) for a, m, apply in checks if s & m == m and (n := apply(s)) is not None]
+        made: dict = {}
+        exec(compile(em.successors_source(actions), "<bcc pddl model>", "exec"), made)
+        compiled.append(made["successors"])
+        return compiled[0](s)
+    return successors
+
+
+def _sampling_expander(em: BitEmitter, actions: list, goal, first):
+    """`expand` (Model.search_layers) that runs `first` and keeps the first SAMPLE_STATES
+    states it is handed; after PRUNED_TREE_AFTER of them, it compiles the tree chosen by
+    what prunes in that sample and runs that one."""
+    current = [first]
+    sample: list = []
+    count = [0]
+
+    def expand(states, seen, outs):
+        if current[0] is first:
+            if len(sample) < SAMPLE_STATES:
+                sample.extend(states[:SAMPLE_STATES - len(sample)])
+            count[0] += len(states)
+            if count[0] >= PRUNED_TREE_AFTER:
+                made: dict = {}
+                source = em.successors_source(actions, prob=atom_shares(sample), goal=goal)
+                exec(compile(source, "<bcc pddl model>", "exec"), made)
+                current[0] = made["expand"]
+        return current[0](states, seen, outs)
+    return expand
 
 
 def _never(s) -> bool:
@@ -133,7 +167,7 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
     from ..model import Grid, Model, Variable
     actions = task.actions
     initial = sum(1 << i for i in task.initial)   # an int: bit i is atom i (bits.py)
-    ns, source = build_functions(actions, task.goal, initial)
+    ns, source = build_functions(actions, task.goal)
     fns = [action_functions(a) for a in actions]
     n = len(task.atoms)
     return Model(

@@ -156,10 +156,13 @@ def test_generated_successors_agree_with_the_ground_task_interpreter(problem, tr
     # The generated bit code (pddl_io/bits.py) against compile.action_functions, which
     # interprets the ground formulas one atom at a time: same successors in every
     # reachable state (conditional effects, negative preconditions and `or` included).
-    # Blind search's `expand` is built from a sampled tree on big tasks: forced here.
+    # Blind search's `expand` moves to a sampled tree on big tasks: forced here at once.
+    # `successors` answers its first calls from the ground task, then compiles: both checked.
     from bcc.pddl_io import compile as pddl_compile
     monkeypatch.setattr(pddl_compile, "SAMPLED_TREE_ACTIONS", 0 if tree == "by pruning" else 10 ** 9)
     monkeypatch.setattr(pddl_compile, "SAMPLE_STATES", 5)     # a sample of a few states only
+    monkeypatch.setattr(pddl_compile, "PRUNED_TREE_AFTER", 0)
+    monkeypatch.setattr(pddl_compile, "INTERPRETED_CALLS", 3)
     model = load(problem)
     (expand,) = model.search_layers()
     seen, todo = {model.initial}, [model.initial]
