@@ -343,6 +343,10 @@ def save(args, configs, problems, dungeons) -> dict:
         check_costs(entry)
     report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
               "time_limit": args.time_limit, "time_limit_clock": "cpu", "configs": configs}
+    if getattr(args, "note", None):
+        report["note"] = args.note
+    if getattr(args, "sources", None):
+        report["combined_from"] = args.sources
     if problems:
         report["ipc"] = {"summary": summarize(problems, configs), "problems": problems}
     if dungeons:
@@ -370,6 +374,7 @@ def main(argv=None):
     ap.add_argument("--stones", type=int, nargs="+", default=[2, 4, 6, 8], help="manipulation dungeons to run")
     ap.add_argument("--combine", type=Path, nargs="+", metavar="JSON",
                     help="only merge the JSON of earlier runs (e.g. halves run side by side) and report")
+    ap.add_argument("--note", help="a sentence kept in the JSON (e.g. which commit ran, or that rows were reused)")
     ap.add_argument("--out", type=Path, default=HERE / "planning.json")
     ap.add_argument("--plot", type=Path, default=HERE / "planning.png")
     args = ap.parse_args(argv)
@@ -387,6 +392,12 @@ def main(argv=None):
             configs = [c for c in configs if any(c in p["runs"] for p in problems)]
         dungeons = [d for part in parts for d in part.get("dungeons", [])]
         args.time_limit = parts[0]["time_limit"]
+        # Which run each configuration's rows come from: Fast Downward's rows may be reused
+        # from an earlier run of the same Fast Downward (it does not change with bcc).
+        args.sources = [{"file": p.name, "configs": part["configs"],
+                         "problems": len(part.get("ipc", {}).get("problems", [])),
+                         **({"note": part["note"]} if part.get("note") else {})}
+                        for p, part in zip(args.combine, parts)]
     elif not args.dungeons_only:
         if args.ipc is None:
             ap.error("--ipc DIR is needed (or --dungeons-only)")

@@ -55,3 +55,31 @@ def test_the_second_validator_replays_plans_on_fast_downwards_translation(tmp_pa
         plan = tmp_path / "plan"
         plan.write_text(text)
         assert bench.sas_replay(domain, problem, str(plan)).startswith(verdict), text
+
+
+def test_combining_runs_merges_configurations_and_says_where_each_came_from(tmp_path):
+    # Fast Downward's rows from an earlier run (reused), bcc's from a fresh one: merged per
+    # problem, and the JSON names each part's file, configurations and note.
+    bench = load_bench()
+
+    def part(name, configs, cost, note=None):
+        runs = {c: {"config": c, "seconds": 1.0, "cpu_seconds": 0.5, "solved": True, "status": "solved",
+                    "cost": cost, "expanded": 3} for c in configs}
+        data = {"time_limit": 120.0, "configs": configs,
+                "ipc": {"problems": [{"name": "road/p1", "runs": runs}]}, **({"note": note} if note else {})}
+        (tmp_path / name).write_text(json.dumps(data))
+        return str(tmp_path / name)
+    fd = part("fd.json", ["fd-blind", "fd-lmcut"], 2, note="Fast Downward 1.0.0, an earlier run")
+    mine = part("bcc.json", ["bcc-astar"], 2)
+    out = tmp_path / "all.json"
+    bench.main(["--combine", fd, mine, "--note", "bcc rows fresh", "--out", str(out),
+                "--plot", str(tmp_path / "p.png")])
+    report = json.loads(out.read_text())
+    assert report["note"] == "bcc rows fresh"
+    assert report["combined_from"] == [
+        {"file": "fd.json", "configs": ["fd-blind", "fd-lmcut"], "problems": 1,
+         "note": "Fast Downward 1.0.0, an earlier run"},
+        {"file": "bcc.json", "configs": ["bcc-astar"], "problems": 1}]
+    (problem,) = report["ipc"]["problems"]
+    assert sorted(problem["runs"]) == ["bcc-astar", "fd-blind", "fd-lmcut"] and problem["cost_check"] == "ok"
+    assert report["ipc"]["summary"]["coverage"] == {"fd-blind": 1, "fd-lmcut": 1, "bcc-astar": 1}
