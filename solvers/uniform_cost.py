@@ -4,8 +4,8 @@ Why not A*'s general loop: with h = 0 the open list is ordered by g alone, so st
 kept per g (a bucket) and a whole bucket is expanded by one generated call
 (`Model.data("cost_expander")`: one loop over a run of states, each next state's cost
 compared and stored in the generated code), where the general loop builds a list of
-(action, state) pairs per state and handles each pair in Python (barman: 2x the time a
-state). Exactness: buckets are taken in increasing g, so when bucket g is taken every
+(action, state) pairs per state and handles each pair in Python (barman: 4.6 against
+5.8 us an expansion; transport p03: 3.0 against 3.9 s). Exactness: buckets are taken in increasing g, so when bucket g is taken every
 state of cost g is in it or reached from it by actions of cost 0 (expanded in the same
 round, until none is left); an entry whose state was since reached more cheaply is
 stale and skipped. Every state of a bucket is goal-tested before the bucket is expanded:
