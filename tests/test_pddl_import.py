@@ -430,8 +430,8 @@ def test_a_portfolio_slice_ends_on_cpu_time_at_a_progress_report(monkeypatch):
 
 def test_the_portfolio_slices_follow_the_time_limit():
     from bcc.pddl_io.portfolio import phases
-    assert phases(None) == [("blind", 1.0), ("lmcut", 5.0), ("blind", None)]
-    assert phases(120) == [("blind", 1.0), ("lmcut", 5.0), ("blind", None)]
+    assert phases(None) == [("blind", 1.0), ("lmcut", 2.0), ("blind", None)]
+    assert phases(120) == [("blind", 1.0), ("lmcut", 2.0), ("blind", None)]
     assert phases(6) == [("blind", pytest.approx(0.3)), ("lmcut", pytest.approx(1.0)), ("blind", None)]
 
 
