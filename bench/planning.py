@@ -343,6 +343,8 @@ def save(args, configs, problems, dungeons) -> dict:
         check_costs(entry)
     report = {"machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
               "time_limit": args.time_limit, "time_limit_clock": "cpu", "configs": configs}
+    if not args.combine:
+        report["wall_factor"] = WALL_FACTOR
     if getattr(args, "note", None):
         report["note"] = args.note
     if getattr(args, "sources", None):
@@ -357,6 +359,7 @@ def save(args, configs, problems, dungeons) -> dict:
 
 
 def main(argv=None):
+    global WALL_FACTOR
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--ipc", type=Path, help="folder with copies of the repositories the manifest names")
     ap.add_argument("--manifest", type=Path, default=MANIFEST)
@@ -367,6 +370,9 @@ def main(argv=None):
                     help="run only every N-th problem of the selection, starting at the K-th (halves run side by "
                          "side are merged with --combine)")
     ap.add_argument("--time-limit", type=float, default=120.0)
+    ap.add_argument("--wall-factor", type=float, default=WALL_FACTOR,
+                    help="a run is killed after this many time limits of wall-clock time (the budget is CPU time): "
+                         "raise it on a loaded machine so that the CPU limit is what stops a run")
     ap.add_argument("--configs", default=",".join([*BCC_CONFIGS, *FD_CONFIGS]))
     ap.add_argument("--no-validate", action="store_true")
     ap.add_argument("--dungeons-only", action="store_true")
@@ -379,6 +385,7 @@ def main(argv=None):
     ap.add_argument("--plot", type=Path, default=HERE / "planning.png")
     args = ap.parse_args(argv)
     configs = args.configs.split(",")
+    WALL_FACTOR = args.wall_factor
     problems, dungeons = [], []
     if args.combine:
         parts = [json.loads(p.read_text()) for p in args.combine]
