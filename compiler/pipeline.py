@@ -120,6 +120,32 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
             built["task"] = found.get("task") if isinstance(found, dict) else None
         return built["task"]
 
+    counted: dict = {}
+
+    def counting_database(time_limit: float | None = None):
+        """The counting abstraction's distances (counting.py), built once; None outside
+        what it handles or past its limits. Kept in the on-disk cache under the relaxed
+        view's key; a build stopped by its time limit is not kept."""
+        if "db" not in counted:
+            from .cache import cached_analysis
+            from . import counting
+            key = b"\0".join([source.encode(), layout.static_grid, initial, layout.start_cells,
+                               repr((n_values, search)).encode()])
+            try:
+                found = cached_analysis("counting", key, lambda: counting.build_or_none(
+                    layout, actions, search, goal_ir, failure_ir, reach, n_values, initial,
+                    [ns[f"apply_{i}"] for i in range(len(actions))], ns["goal"], ns["failure"], time_limit))
+            except counting.TooBig:
+                return None  # out of time: another call, with more time, may still build it
+            counted["db"] = found.get("db") if isinstance(found, dict) else None
+        return counted["db"]
+
+    @functools.lru_cache(maxsize=1)
+    def counting_wanted() -> bool:
+        """Whether the goal needs cells of the grid changed (counting.goal_changes_cells)."""
+        from . import counting
+        return counting.goal_changes_cells(layout, actions, search, goal_ir, failure_ir, reach, n_values, initial)
+
     report = {
         "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
         "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
@@ -156,6 +182,8 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         report=report, source=source, display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"pattern_database": pattern_database,
                                                     "relaxed_task": relaxed_task,
+                                                    "counting_database": counting_database,
+                                                    "counting_wanted": counting_wanted,
                                                     "layer_expanders": layer_expanders,
                                                     "layer_skips": layer_skips,
                                                     "dense_functions": dense_functions})

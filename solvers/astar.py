@@ -47,14 +47,21 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     mask = meter.mask
     switching = heuristic == "auto"
     used = "manhattan" if switching else heuristic
+    h = None
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
         # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if there is one.
         switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
     elif switching and position_blind(model):
         # The goal does not pin the agent's position: manhattan and the pattern database
-        # are 0 everywhere, so they would only slow a blind search down.
+        # are 0 everywhere. Where the goal needs cells of the grid changed, the counting
+        # abstraction sees what it asks; elsewhere, or where that cannot be built, blind
+        # search (its fast loop).
         switching, used = False, "blind"
-    h = HEURISTICS[used](model)
+        if model.data("counting_wanted"):
+            h = HEURISTICS["counting"](model, budget.time_limit)
+            used = "blind" if getattr(h, "fallback", None) else "counting"
+    if h is None:
+        h = HEURISTICS[used](model)
     zero = used == "blind"
     if zero and len(set(model.action_costs)) <= 1:
         return _layered(model, meter, name)
