@@ -38,9 +38,10 @@ from dataclasses import dataclass
 
 from . import ir
 from .abstract import Abstract
-from .relevance import CELLS, reads
+from .relevance import CELLS, effect_reads_writes, reads
 
 MAX_STATES = 3_000_000     # abstract states explored at most
+FULL_STATES = 500_000      # past this many with every variable kept, some are projected away
 MAX_EXACT = 12             # cells kept exactly at most
 
 
@@ -56,6 +57,9 @@ class TooBig(Exception):
         self.timed_out = timed_out
 
 
+SHIFT = 24     # an abstract state's number: variables id << SHIFT | cell part id
+
+
 @dataclass(frozen=True)
 class CountingDatabase:
     base: int              # state[:base] are the variables
@@ -63,13 +67,16 @@ class CountingDatabase:
     start_exact: bytes     # the exact cells' start values
     tracked: dict          # (mutable cell index, value) -> count slot (values other than the cell's start)
     n_slots: int
-    table: dict            # abstract key -> distance to the goal (finite ones only)
-    dead: frozenset        # abstract keys from which the goal is unreachable
+    variables: dict        # the variables (bytes) of abstract states -> their id
+    parts: dict            # cell parts (exact values, then 2-byte counts) -> their id
+    table: dict            # abstract state number -> distance to the goal (math.inf: unreachable)
     states: int            # abstract states explored
+    projected: tuple = ()  # (index, start byte) of each variable projected away
+    shift: int = SHIFT
 
-    def key(self, state: bytes, entries) -> bytes | None:
-        """The abstract key of a state (its changed-cell `entries`), or None if some cell
-        holds a value the abstraction did not expect."""
+    def part(self, entries) -> bytes | None:
+        """The cell part of a state (from its changed-cell `entries`), or None if some
+        cell holds a value the abstraction did not expect."""
         ex = bytearray(self.start_exact)
         counts = array.array("H", bytes(2 * self.n_slots))
         exact, tracked = self.exact, self.tracked
@@ -83,14 +90,50 @@ class CountingDatabase:
             if slot is None:
                 return None
             counts[slot] += 1
-        return state[:self.base] + bytes(ex) + counts.tobytes()
+        return bytes(ex) + counts.tobytes()
+
+    def project(self, state: bytes) -> bytes:
+        """The state's variables, each projected one at its start value."""
+        if not self.projected:
+            return state[:self.base]
+        vb = bytearray(state[:self.base])
+        for j, c in self.projected:
+            vb[j] = c
+        return bytes(vb)
+
+    def number(self, state: bytes, entries) -> int | None:
+        """The abstract state's number, or None if the abstraction never met it."""
+        v = self.variables.get(self.project(state))
+        r = self.parts.get(self.part(entries))
+        return None if v is None or r is None else v << SHIFT | r
 
 
 def build(layout, actions, search, goal, failure, reach, n_values, initial: bytes, apply_fns, is_goal, is_failure,
           time_limit: float | None = None, max_states: int = MAX_STATES) -> CountingDatabase:
-    """The database; raises Unsupported outside the abstraction, TooBig past its limits."""
-    return _Builder(layout, actions, search, goal, failure, reach, n_values, initial, apply_fns, is_goal,
-                    is_failure, time_limit, max_states).run()
+    """The database; raises Unsupported outside the abstraction, TooBig past its limits.
+
+    First with every variable; past FULL_STATES abstract states, again with variables
+    projected away (any of their values: coarser, still admissible), the one with the
+    most values first, until it fits in `max_states`. Only variables that neither the
+    goal nor a cell's position reads are projected (a selected slot, a gaze)."""
+    deadline = math.inf if time_limit is None else time.process_time() + time_limit
+    args = (layout, actions, search, goal, failure, reach, n_values, initial, apply_fns, is_goal, is_failure,
+            deadline)
+    first = _Builder(*args, min(max_states, FULL_STATES))
+    try:
+        return first.run()
+    except TooBig as exc:
+        if exc.timed_out:
+            raise
+    project: list = []
+    for j in first.projectable():
+        project.append(j)
+        try:
+            return _Builder(*args, max_states, project=tuple(project)).run()
+        except TooBig as exc:
+            if exc.timed_out:
+                raise
+    raise TooBig(f"more than {max_states:,} abstract states")
 
 
 def goal_changes_cells(layout, actions, search, goal, failure, reach, n_values, initial: bytes, *rest) -> bool:
@@ -99,7 +142,7 @@ def goal_changes_cells(layout, actions, search, goal, failure, reach, n_values, 
     usually cheaper than building it. Cheap: no state is explored."""
     try:
         return bool(_Builder(layout, actions, search, goal, failure, reach, n_values, initial, None, None, None,
-                             None, 0).exact)
+                             math.inf, 0).exact)
     except (Unsupported, TooBig):
         return False
 
@@ -119,24 +162,45 @@ def build_or_none(*args, **kw) -> dict:
 
 class _Builder:
     def __init__(self, layout, actions, search, goal, failure, reach, n_values, initial, apply_fns, is_goal,
-                 is_failure, time_limit, max_states):
+                 is_failure, deadline, max_states, keep=None, project=()):
         if not layout.layers:
             raise Unsupported("no mutable cells")
         from .reachability import Analysis
         self.L, self.actions, self.search = layout, actions, list(search)
+        self.failure, self.reach = failure, reach
         self.an = Analysis(layout, n_values)
         self.base = layout.grid_base
         self.initial = initial[:self.base]
         self.apply_fns, self.is_goal, self.is_failure = apply_fns, is_goal, is_failure
-        self.deadline = math.inf if time_limit is None else time.process_time() + time_limit
+        self.deadline = deadline
         self.max_states = max_states
         self.start = layout.start_cells
         self.area = layout.width * layout.depth
         self.written = reach.written
         self.failure_reads_cells = CELLS in reads(failure, self.an, {}, set()) or _has_loop(failure)
         self.goal_vars = {v for v in reads(goal, self.an, {}, set()) if isinstance(v, ir.StateVar)}
-        self._classify(goal)
+        self._classify(goal, keep)
         self._plan_actions()
+        # Variables projected away: any of their reachable values (an over-approximation);
+        # never one the goal reads or one that places a cell an action touches.
+        slots = [layout.slots[j] for j in project]
+        if any(sl.var in self.goal_vars or sl.index in self.coordinate_vars for sl in slots):
+            raise Unsupported("cannot project away a variable the goal or a cell position reads")
+        self.projected = tuple((sl.index, tuple(sorted(v - sl.lo for v in reach.values.get(sl.var, range(sl.lo, sl.hi + 1)))))
+                               for sl in slots)
+        failure_vars = reads(failure, self.an, {}, set())
+        self.failure_projected = any(sl.var in failure_vars for sl in slots)
+
+    def projectable(self) -> list:
+        """Variables that may be projected away, the one with the most reachable values first."""
+        failure_vars = reads(self.failure, self.an, {}, set())
+        out = []
+        for sl in self.L.slots:
+            n = len(self.reach.values.get(sl.var, range(sl.lo, sl.hi + 1)))
+            if n > 1 and sl.var not in self.goal_vars and sl.var not in failure_vars \
+                    and sl.index not in self.coordinate_vars:
+                out.append((-n, sl.index))
+        return [j for _, j in sorted(out)]
 
     # ---- cells: which are exact, which counted in which class ------------------------
     def _xyz(self, m: int) -> tuple:
@@ -154,7 +218,7 @@ class _Builder:
         _, y, _ = self._xyz(m)
         return tuple(sorted({self.start[m]} | set(self.written.get(y, ()))))
 
-    def _classify(self, goal) -> None:
+    def _classify(self, goal, keep=None) -> None:
         n = len(self.start)
         sig = [[True] * len(self._alphabet(m)) for m in range(n)]
         exact = set()
@@ -180,9 +244,8 @@ class _Builder:
                 m = self._mutable(*xyz)
                 if m is not None:
                     exact.add(m)
-        for m in range(n):
-            if not sig[m][self._alphabet(m).index(self.start[m])]:
-                exact.add(m)
+        self.must_change = [m for m in range(n) if not sig[m][self._alphabet(m).index(self.start[m])]]
+        exact |= set(self.must_change) if keep is None else set(keep) & set(self.must_change)
         if len(exact) > MAX_EXACT:
             raise TooBig(f"{len(exact)} cells to keep exactly")
         self.exact = {m: p for p, m in enumerate(sorted(exact))}
@@ -252,6 +315,20 @@ class _Builder:
                     coord_vars |= r
             idx = sorted(self.L.by_var[v].index for v in coord_vars if v in self.L.by_var)
             self.touch_vars[i] = (idx, cells, lets)
+        self.coordinate_vars = {j for idx, _, _ in self.touch_vars.values() for j in idx}
+        # What an action does depends on the variables it reads or writes (and its cells):
+        # its outcomes are memoized by their values (a move: by position and facing only).
+        self.key_of, self.writes_of, self.deltas = {}, {}, {}
+        for i in self.search:
+            a = self.actions[i]
+            lets = {loc.name: value for loc, value in a.lets}
+            r, w = set(), set()
+            for c in a.pre:
+                reads(c, self.an, lets, r)
+            effect_reads_writes(a.effects, self.an, lets, r, w)
+            kidx = sorted({self.L.by_var[v].index for v in r | w if v in self.L.by_var})
+            self.key_of[i] = operator.itemgetter(*kidx) if kidx else (lambda vb: ())
+            self.writes_of[i] = sorted(self.L.by_var[v].index for v in w if v in self.L.by_var)
         self.touch_memo: dict = {}
 
     def touched(self, i: int, vars_: bytes) -> tuple:
@@ -297,95 +374,117 @@ class _Builder:
     # ---- the exploration ----------------------------------------------------------------
     def run(self) -> CountingDatabase:
         """Explore the abstract states from the start's, then search backward by cost.
-        A state is its key: the variables, the exact cells, the counts (2 bytes each).
-        What an action does depends on the variables and the touched cells' values only,
-        and what a change does to the cells on the cell part only: both are memoized."""
+        A state is numbered by its variables' id and its cell part's id (the exact
+        cells, then the counts, 2 bytes each). What an action does depends on the
+        variables and the touched cells' values only, and what a change does to the
+        cells on the cell part only: both are memoized by id."""
         from ..model import cell_entries
-        base, exact = self.base, self.exact
         n_exact = len(self.exact)
-        zero = array.array("H", bytes(2 * self.n_slots))
-        start_key = self.initial + self.start_exact + zero.tobytes()
-        ids = {start_key: 0}
-        states = [start_key]
+        variables = {self.initial: 0}
+        var_list = [self.initial]
+        parts = {self.start_exact + bytes(2 * self.n_slots): 0}
+        part_list = list(parts)
+        ids = {0: 0}
+        states = [0]
         src, dst, cost_of = array.array("i"), array.array("i"), array.array("d")
         goals = []
-        plans: dict = {}         # variables -> [(action, touched cells, kinds)]
-        outcomes: dict = {}      # (action, variables, values of the touched cells) -> (next variables, changes) | None
-        moved: dict = {}         # (cell part, changes) -> next cell part
-        choices_of: dict = {}    # (cell part, kinds) -> the value choices of the touched cells
+        plans: list = []         # by variables id: [(action, touched cells, kinds, next variables id | None)]
+        outcomes: dict = {}      # (action, variables id, values of the touched cells) -> (next variables id, changes) | None
+        moved: dict = {}         # (cell part id, changes) -> next cell part id
+        choices_of: dict = {}    # (cell part id, kinds) -> the value choices of the touched cells
         goal_memo: dict = {}
+        goal_class: list = []    # by variables id: the id of the goal's variables' values
+        goal_classes: dict = {}
         goal_idx = sorted(self.L.by_var[v].index for v in self.goal_vars if v in self.L.by_var)
+        goal_of = operator.itemgetter(*goal_idx) if goal_idx else (lambda v: ())
         costs = [a.cost for a in self.actions]
         check_cells = self.failure_reads_cells
         max_states, deadline = self.max_states, self.deadline
         uniform = len({costs[i] for i in self.search}) <= 1
-        goal_of = operator.itemgetter(*goal_idx) if goal_idx else (lambda v: ())
+        mask = (1 << SHIFT) - 1
+
+        def var_id(vb: bytes) -> int:
+            found = variables.get(vb)
+            if found is None:
+                found = variables[vb] = len(var_list)
+                var_list.append(vb)
+            return found
+
         u = 0
         while u < len(states):
             if u & 1023 == 0 and time.process_time() > deadline:
                 raise TooBig("the time limit ran out", timed_out=True)
-            key = states[u]
-            vars_, rest = key[:base], key[base:]
-            gkey = (goal_of(vars_), rest)
+            s = states[u]
+            vid, rid = s >> SHIFT, s & mask
+            while vid >= len(plans):   # the variables' plan and goal class, once each
+                vb = var_list[len(plans)]
+                plan = self._plan(vb, cell_entries, check_cells)
+                plans.append([(i, t, k, None if f is None else tuple(var_id(x) for x in f)) for i, t, k, f in plan])
+                gk = goal_of(vb)
+                goal_class.append(goal_classes.setdefault(gk, len(goal_classes)))
+            gkey = goal_class[vid] << SHIFT | rid
             g = goal_memo.get(gkey)
             if g is None:
-                g = goal_memo[gkey] = self._goal(vars_, rest)
+                g = goal_memo[gkey] = self._goal(var_list[vid], part_list[rid])
             if g:
                 goals.append(u)
-            plan = plans.get(vars_)
-            if plan is None:
-                plan = plans[vars_] = self._plan(vars_, cell_entries, check_cells)
-            for i, touched, kinds, free in plan:
-                if free is not None:   # touches no mutable cell: the outcome is known
-                    nkey = free + rest
-                    v = ids.get(nkey)
-                    if v is None:
-                        v = ids[nkey] = len(states)
-                        states.append(nkey)
-                    src.append(u)
-                    dst.append(v)
-                    if not uniform:
-                        cost_of.append(costs[i])
+            for i, touched, kinds, free in plans[vid]:
+                if free is not None:   # touches no mutable cell: the outcomes are known
+                    for nvid in free:
+                        nkey = nvid << SHIFT | rid
+                        v = ids.get(nkey)
+                        if v is None:
+                            v = ids[nkey] = len(states)
+                            states.append(nkey)
+                        if v != u:
+                            src.append(u)
+                            dst.append(v)
+                            if not uniform:
+                                cost_of.append(costs[i])
                     continue
-                ckey = (rest, kinds)
+                ckey = (rid, kinds)
                 options = choices_of.get(ckey)
                 if options is None:
-                    options = choices_of[ckey] = self._choices(rest, touched, kinds)
+                    options = choices_of[ckey] = self._choices(part_list[rid], touched, kinds)
                 for choice in options:
-                    okey = (i, vars_, choice)
-                    out = outcomes.get(okey, False)
-                    if out is False:
-                        out = outcomes[okey] = self._outcome(i, vars_, rest[:n_exact], touched, choice, cell_entries)
-                    if out is None:
-                        continue
-                    new_vars, changes = out
-                    if changes:
-                        mkey = (rest, changes)
-                        nrest = moved.get(mkey)
-                        if nrest is None:
-                            nrest = moved[mkey] = self._moved(rest, changes)
-                    else:
-                        nrest = rest
-                    nkey = new_vars + nrest
-                    v = ids.get(nkey)
-                    if v is None:
-                        v = ids[nkey] = len(states)
-                        states.append(nkey)
-                    if v != u:
-                        src.append(u)
-                        dst.append(v)
-                        if not uniform:
-                            cost_of.append(costs[i])
-            if len(states) > max_states:
+                    okey = (i, vid, choice)
+                    outs = outcomes.get(okey)
+                    if outs is None:
+                        found = self._outcome(i, var_list[vid], touched, choice, cell_entries)
+                        outs = outcomes[okey] = tuple((var_id(f[0]), f[1]) for f in found)
+                    for nvid, changes in outs:
+                        if changes:
+                            mkey = (rid, changes)
+                            nrid = moved.get(mkey)
+                            if nrid is None:
+                                nb = self._moved(part_list[rid], changes)
+                                nrid = parts.get(nb)
+                                if nrid is None:
+                                    nrid = parts[nb] = len(part_list)
+                                    part_list.append(nb)
+                                moved[mkey] = nrid
+                        else:
+                            nrid = rid
+                        nkey = nvid << SHIFT | nrid
+                        v = ids.get(nkey)
+                        if v is None:
+                            v = ids[nkey] = len(states)
+                            states.append(nkey)
+                        if v != u:
+                            src.append(u)
+                            dst.append(v)
+                            if not uniform:
+                                cost_of.append(costs[i])
+            if len(states) > max_states or len(part_list) > mask:
                 raise TooBig(f"more than {max_states:,} abstract states")
             u += 1
         if uniform:
             cost_of = array.array("d", [costs[self.search[0]] if self.search else 1]) * len(src)
         dist = _backward(len(states), src, dst, cost_of, goals)
-        table = {k: (int(d) if d == int(d) else d) for k, d in zip(states, dist) if d != math.inf}
-        dead = frozenset(k for k, d in zip(states, dist) if d == math.inf)
-        return CountingDatabase(base, dict(exact), self.start_exact, dict(self.tracked), self.n_slots, table, dead,
-                                len(states))
+        table = {k: (d if d == math.inf or d != int(d) else int(d)) for k, d in zip(states, dist)}
+        return CountingDatabase(self.base, dict(self.exact), self.start_exact, dict(self.tracked), self.n_slots,
+                                variables, parts, table, len(states),
+                                tuple((j, self.initial[j]) for j, _ in self.projected))
 
     def _counts(self, rest: bytes) -> array.array:
         return array.array("H", rest[len(self.exact):])
@@ -399,17 +498,17 @@ class _Builder:
         for each whether it is exact (its position) or counted (its class), and for an
         action that touches none its next variables (it changes no cell)."""
         out = []
-        if not check_cells and self.is_failure(self.concrete(vars_, {})):
+        if not check_cells and not self.failure_projected and self.is_failure(self.concrete(vars_, {})):
             return out   # the search never expands a failed state (it is a goal, or dropped)
         for i in self.search:
             touched = self.touched(i, vars_)
             kinds = tuple(("e", self.exact[m]) if m in self.exact else ("c", self.class_of[m]) for m in touched)
             free = None
             if not touched:
-                found = self._outcome(i, vars_, self.start_exact, (), (), cell_entries, exact=False)
-                if found is None:
+                found = self._outcome(i, vars_, (), (), cell_entries)
+                if not found:
                     continue
-                free = found[0]
+                free = tuple(f[0] for f in found)
             out.append((i, touched, kinds, free))
         return out
 
@@ -463,25 +562,66 @@ class _Builder:
                 return False
         return True
 
-    def _outcome(self, i, vars_, ex, touched, choice, cell_entries, exact=True):
-        """(next variables, ((cell, old, new), ...)) of action i on the concrete state, or None.
-        With `exact` false the action touches no mutable cell, so none is set."""
-        cells = self.exact_cells(ex) if exact else {}
-        cells.update(zip(touched, choice))
-        state = self.concrete(vars_, cells)
-        nxt = self.apply_fns[i](state)
-        if nxt is None or nxt == state:
-            return None
-        after = dict(cells)
-        for m in cells:
-            after[m] = self.start[m]
-        for e in cell_entries(nxt[self.base:]):
-            m = e >> 8
-            if m not in cells:
-                raise Unsupported("an action wrote a cell it was not expected to touch")
-            after[m] = e & 255
-        changes = tuple((m, cells[m], after[m]) for m in sorted(cells) if after[m] != cells[m])
-        return nxt[:self.base], changes
+    def _outcome(self, i, vars_, touched, choice, cell_entries) -> tuple:
+        """The (next variables, ((cell, old, new), ...)) action i may give from these
+        variables with its touched cells holding `choice` (several where variables are
+        projected away)."""
+        key = (i, self.key_of[i](vars_), choice)
+        found = self.deltas.get(key)
+        if found is None:
+            found = self.deltas[key] = self._run(i, vars_, touched, choice, cell_entries)
+        out = []
+        for delta, changes in found:
+            vb = bytearray(vars_)
+            for j, value in delta:
+                vb[j] = value
+            nxt = self._projected(bytes(vb))
+            if (nxt != vars_ or changes) and (nxt, changes) not in out:
+                out.append((nxt, changes))
+        return tuple(out)
+
+    def _run(self, i, vars_, touched, choice, cell_entries) -> tuple:
+        """Run action i on the concrete states: ((written variables' values), changes) each."""
+        cells = dict(zip(touched, choice))
+        found = []
+        writes = self.writes_of[i]
+        for vb in self._unprojected(vars_):
+            state = self.concrete(vb, cells)
+            nxt = self.apply_fns[i](state)
+            if nxt is None or nxt == state:
+                continue
+            after = dict(cells)
+            for m in cells:
+                after[m] = self.start[m]
+            for e in cell_entries(nxt[self.base:]):
+                m = e >> 8
+                if m not in cells:
+                    raise Unsupported("an action wrote a cell it was not expected to touch")
+                after[m] = e & 255
+            changes = tuple((m, cells[m], after[m]) for m in sorted(cells) if after[m] != cells[m])
+            out = (tuple((j, nxt[j]) for j in writes), changes)
+            if out not in found:
+                found.append(out)
+        return tuple(found)
+
+    def _unprojected(self, vars_: bytes):
+        """The variables with every combination of values of the projected ones."""
+        if not self.projected:
+            yield vars_
+            return
+        vb = bytearray(vars_)
+        for combo in itertools.product(*(values for _, values in self.projected)):
+            for (j, _), value in zip(self.projected, combo):
+                vb[j] = value
+            yield bytes(vb)
+
+    def _projected(self, vars_: bytes) -> bytes:
+        if not self.projected:
+            return vars_
+        vb = bytearray(vars_)
+        for j, _ in self.projected:
+            vb[j] = self.initial[j]
+        return bytes(vb)
 
 
 def _backward(n: int, src, dst, cost, goals) -> list:

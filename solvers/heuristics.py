@@ -107,14 +107,15 @@ def counting(model: Model, time_limit: float | None = None):
         h.fallback = "blind"
         return h
     from ..model import cell_entries
-    base, get, key, dead = db.base, db.table.get, db.key, db.dead
+    base, variables, parts, part, get, shift = db.base, db.variables.get, db.parts.get, db.part, db.table.get, db.shift
+
+    project = db.project if db.projected else None
 
     def h(s):
-        k = key(s, cell_entries(s[base:]))
-        d = get(k)
-        if d is not None:
-            return d
-        return math.inf if k in dead else 0   # not explored: cannot happen; 0 stays admissible
+        v = variables(project(s) if project else s[:base])
+        r = parts(part(cell_entries(s[base:])))
+        d = None if v is None or r is None else get(v << shift | r)
+        return 0 if d is None else d   # None: never met by the abstraction (cannot happen); 0 stays admissible
     return h
 
 

@@ -172,6 +172,24 @@ def test_a_build_stopped_by_its_time_limit_is_not_cached(tmp_path, monkeypatch):
     assert list((tmp_path / "cache").glob("counting/*.pickle"))
 
 
+def test_variables_are_projected_away_past_the_first_limit(tmp_path, monkeypatch):
+    """Past FULL_STATES the selected slot (9 values, read by no goal and no cell position)
+    is projected away: fewer abstract states, still admissible and consistent everywhere
+    (exhaustive), and A* still finds BFS's cost."""
+    monkeypatch.setenv("BCC_NO_CACHE", "1")
+    path = _write(tmp_path, "tiny_rooms", TINY_ROOMS)
+    full = compile_dungeon(path).data("counting_database")
+    assert full.projected == ()
+    monkeypatch.setattr(counting, "FULL_STATES", full.states - 1)
+    model = compile_dungeon(path)
+    db = model.data("counting_database")
+    labels = [v.label for v in model.variables]
+    assert [labels[j] for j, _ in db.projected] == ["agent.selectedItem"] and db.states < full.states
+    cost = check(model)
+    result = get_solver("astar")(model, BUDGET)
+    assert result.heuristic == "counting" and result.cost == cost
+
+
 def test_state_limit_gives_up(tmp_path):
     model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
     f = model.lazy["counting_database"]
@@ -179,6 +197,7 @@ def test_state_limit_gives_up(tmp_path):
     args = (cl["layout"], cl["actions"], cl["search"], cl["goal_ir"], cl["failure_ir"], cl["reach"], cl["n_values"],
             cl["initial"], model.apply_fns, model.is_goal, model.is_failure)
     assert counting.build_or_none(*args, max_states=1000) == {"db": None}
+    assert counting.build(*args, max_states=20_000).projected    # 26,568 states with every variable
     with pytest.raises(counting.TooBig):
         counting.build(*args, max_states=1000)
 
