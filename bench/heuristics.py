@@ -7,11 +7,14 @@
     python bench/heuristics.py --quick          # stones 1 2, reference grid/bridge, 20 s
     python bench/heuristics.py --stones 1 2 4 6 8 --reference --configs gbfs:hff --merge
                                                 # re-run some rows, keep the others in the json
+    python bench/heuristics.py --stones 1 2 4 6 8 --reference --configs astar:auto --no-cache --merge
+                                                # cold starts: every run builds what it needs
 
 Prints a table and writes bench/heuristics.json. Every run is a subprocess of the
 installed `bcc solve --json` (its own memory, its own budget); `relaxed_build_seconds`
-is the time to build the relaxed view once per dungeon (measured apart; that build also
-leaves the view in bcc's on-disk cache, so the runs read it, unless --no-cache). Expansions are
+is the time to build the relaxed view once per dungeon, `counting_build_cpu_seconds` the
+counting abstraction's (measured apart; that build also leaves them in bcc's on-disk cache,
+so the runs read them, unless --no-cache: rows say `cache: warm` or `off`). Expansions are
 the figure to compare; timings on a shared machine are noisy: `cpu_seconds` (the whole
 `bcc` process's user + system time) suffers less from other load than `seconds` (wall,
 as `bcc` reports it).
@@ -30,7 +33,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))   # also when a test loads this file by its path
 from timed_env import timed_env  # noqa: E402
-CONFIGS = [("astar", "blind"), ("astar", "auto"), ("astar", "hmax"), ("astar", "lmcut"),
+CONFIGS = [("astar", "blind"), ("astar", "auto"), ("astar", "counting"), ("astar", "hmax"), ("astar", "lmcut"),
            ("gbfs", "hff"), ("gbfs", "hadd"), ("gbfs", "pdb"), ("wastar", "hff")]
 REFERENCE = ["grid", "bridge", "easy_maze", "tough_maze", "four_rooms"]
 
@@ -56,13 +59,31 @@ def run(dungeon: str, solver: str, heuristic: str, time_limit: float, cache: boo
             "cache": "warm" if cache else "off"}
 
 
-def build_seconds(dungeon: str) -> dict:
+def build_seconds(dungeon: str, counting: bool) -> dict:
+    """Build times of the relaxed view and (with `counting`) the counting abstraction, in
+    this process: CPU seconds, with the cache off so they are really built; both are then
+    written to the cache for the warm runs."""
+    import os
     from bcc.compiler import compile_dungeon
     model = compile_dungeon(dungeon)
     start = time.perf_counter()
     task = model.data("relaxed_task")
-    return {"relaxed_build_seconds": round(time.perf_counter() - start, 3),
-            "relaxed": None if task is None else {k: v for k, v in task.stats.items() if k != "groups"}}
+    out = {"relaxed_build_seconds": round(time.perf_counter() - start, 3),
+           "relaxed": None if task is None else {k: v for k, v in task.stats.items() if k != "groups"}}
+    if counting:
+        os.environ["BCC_NO_CACHE"] = "1"
+        try:
+            start = time.process_time()
+            db = compile_dungeon(dungeon).data("counting_database")
+            out["counting_build_cpu_seconds"] = round(time.process_time() - start, 3)
+        finally:
+            del os.environ["BCC_NO_CACHE"]
+        names = [v.label for v in model.variables]
+        out["counting"] = None if db is None else {
+            "abstract_states": db.states, "exact_cells": len(db.exact),
+            "projected": [names[j] for j, _ in db.projected]}
+        model.data("counting_database")   # into the cache, for the warm runs
+    return out
 
 
 def main() -> int:
@@ -95,7 +116,7 @@ def main() -> int:
         dungeons += [(name, name) for name in args.reference]
         print(f"{'dungeon':<16} {'solver':<7} {'heuristic':<9} {'solved':<6} {'cost':>5} {'expanded':>9} {'seconds':>8} {'cpu':>6}")
         for label, ref in dungeons:
-            info = build_seconds(ref)
+            info = build_seconds(ref, any(h in ("auto", "counting") for s, h in configs if s == "astar"))
             for solver, heuristic in configs:
                 r = run(ref, solver, heuristic, args.time_limit, cache=not args.no_cache)
                 r.update({"dungeon": label, "solver": solver, "heuristic": heuristic, **info})
@@ -105,9 +126,11 @@ def main() -> int:
     out = {"time_limit": args.time_limit, "rows": rows}
     if args.merge and Path(args.output).exists():
         old = json.loads(Path(args.output).read_text())
-        ran = {(r["dungeon"], r["solver"], r["heuristic"]) for r in rows}
+        def key(r):
+            return r["dungeon"], r["solver"], r["heuristic"], r.get("cache", "warm")
+        ran = {key(r) for r in rows}
         kept = [dict(r, time_limit=r.get("time_limit", old.get("time_limit"))) for r in old.get("rows", [])
-                if (r["dungeon"], r["solver"], r["heuristic"]) not in ran]
+                if key(r) not in ran]
         out = {"time_limit": args.time_limit,
                "rows": kept + [dict(r, time_limit=args.time_limit) for r in rows]}
     write_text(args.output, json.dumps(out, indent=1) + "\n")

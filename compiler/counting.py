@@ -260,6 +260,8 @@ class _Builder:
         self.members = [[] for _ in classes]
         for m, k in self.class_of.items():
             self.members[k].append(m)
+        if any(len(mm) > 65_535 for mm in self.members):
+            raise Unsupported("a class of more cells than a count holds")
         self.tracked, self.slot_of_class = {}, []
         slots = 0
         for (s, start, alphabet), k in classes.items():

@@ -132,5 +132,6 @@ def _relaxed(kind: str):
     return make
 
 
-HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind, "counting": counting,
-              "hmax": _relaxed("hmax"), "hadd": _relaxed("hadd"), "hff": _relaxed("hff"), "lmcut": _relaxed("lmcut")}
+HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind,
+              "hmax": _relaxed("hmax"), "hadd": _relaxed("hadd"), "hff": _relaxed("hff"), "lmcut": _relaxed("lmcut"),
+              "counting": counting}
