@@ -19,6 +19,8 @@ still running after SWITCH_AFTER expansions, builds the pattern database and re-
 open list by it. Both are consistent, so optimality is kept: every closed state already
 has its optimal g, and the open list still holds a state of some optimal path. A budget
 check or the switch never skips work: the state popped on that expansion is expanded.
+Where the goal needs cells of the grid changed (carrying things somewhere), `auto` uses
+the counting abstraction (compiler/counting.py) instead, if it can be built.
 """
 from __future__ import annotations
 
@@ -48,18 +50,21 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     switching = heuristic == "auto"
     used = "manhattan" if switching else heuristic
     h = None
+    if switching and model.data("counting_wanted"):
+        # The goal needs cells of the grid changed: the counting abstraction sees that (and
+        # the agent's position, which it keeps); past its limits, the choices below.
+        h = HEURISTICS["counting"](model, budget.time_limit)
+        if getattr(h, "fallback", None):
+            h = None
+        else:
+            switching, used = False, "counting"
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
         # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if there is one.
         switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
     elif switching and position_blind(model):
         # The goal does not pin the agent's position: manhattan and the pattern database
-        # are 0 everywhere. Where the goal needs cells of the grid changed, the counting
-        # abstraction sees what it asks; elsewhere, or where that cannot be built, blind
-        # search (its fast loop).
+        # are 0 everywhere, so they would only slow a blind search down.
         switching, used = False, "blind"
-        if model.data("counting_wanted"):
-            h = HEURISTICS["counting"](model, budget.time_limit)
-            used = "blind" if getattr(h, "fallback", None) else "counting"
     if h is None:
         h = HEURISTICS[used](model)
     zero = used == "blind"

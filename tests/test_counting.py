@@ -93,6 +93,23 @@ def test_tiny_rooms_exhaustive(tmp_path):
     assert result.heuristic == "counting" and result.solved and result.cost == cost
 
 
+@pytest.mark.parametrize("goal", [
+    "forall b in block . (b.blockType != burlap_stone or b.x > 4)",
+    "agentInRoom(agent, red) and forall b in block . (b.blockType != burlap_stone or b.z == 2)",
+    "not agentHasBlock(agent, burlap_stone) and forall b in block . (b.y != 1 or b.x != 5 or b.z != 2 "
+    "or b.blockType == burlap_stone)",
+])
+def test_other_goals_exhaustive(tmp_path, goal):
+    """Other partitions of the cells (by column, by row, a goal that also pins the agent,
+    a goal that asks a cell to be filled): admissible and consistent on every reachable
+    state, and A* with the abstraction finds the exhaustive search's cost."""
+    model = compile_dungeon(_write(tmp_path, "tiny_rooms", TINY_ROOMS), goal=goal)
+    assert model.data("counting_database") is not None
+    cost = check(model)
+    result = get_solver("astar")(model, BUDGET, heuristic="counting")
+    assert result.solved and result.cost == cost
+
+
 @pytest.mark.parametrize("stones", [1, 2])
 def test_manipulation_rooms_admissible_and_optimal(tmp_path, stones):
     model = compile_dungeon(_write(tmp_path, f"rooms{stones}", generate_manipulation(stones)))
@@ -148,6 +165,26 @@ def test_auto_uses_counting_only_where_the_goal_needs_cells_changed(model_of, tm
     assert not model_of("pasture").data("counting_wanted")
     assert get_solver("astar")(model_of("pasture"), BUDGET).heuristic == "blind"
     assert compile_dungeon(_write(tmp_path, "corridor", CORRIDOR)).data("counting_wanted")
+
+
+def test_a_goal_no_abstract_state_meets_is_infinite(tmp_path):
+    # Every cell at (5, y, 2) must hold a stone, the floor's bedrock too: no plan.
+    goal = "forall b in block . (b.blockType == burlap_stone or b.x != 5 or b.z != 2)"
+    model = compile_dungeon(_write(tmp_path, "tiny_rooms", TINY_ROOMS), goal=goal)
+    assert HEURISTICS["counting"](model)(model.initial) == float("inf")
+    result = get_solver("astar")(model, BUDGET, heuristic="counting")
+    assert not result.solved and result.status == "no_solution" and result.expanded == 0
+
+
+def test_auto_uses_counting_where_the_goal_also_pins_the_agent(tmp_path):
+    """With "and the agent in the red room" the position heuristics see the agent's part
+    only; auto takes the counting abstraction (which keeps the agent's position too)."""
+    goal = ("not agentHasBlock(agent, burlap_stone) and agentInRoom(agent, red) and "
+            "forall b in block . (b.blockType != burlap_stone or blockInRoom(b, blue))")
+    model = compile_dungeon(_write(tmp_path, "rooms1", generate_manipulation(1)), goal=goal)
+    bfs = get_solver("bfs")(model, BUDGET)
+    result = get_solver("astar")(model, BUDGET)
+    assert result.heuristic == "counting" and result.cost == bfs.cost and result.expanded * 20 < bfs.expanded
 
 
 def test_unsupported_goals_give_no_database(model_of):
