@@ -249,3 +249,20 @@ def test_cli_solves_manipulation_with_counting(tmp_path):
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     assert data["cost"] == 25 and data["heuristic"] == "counting" and data["expanded"] < 200
+
+
+def test_cli_time_limit_bounds_the_build(tmp_path):
+    """6 stones: the abstraction takes several seconds of CPU to build (1.3 M states
+    before it projects the selected slot away); --time-limit 0.5 stops the command (exit
+    1, a budget result) and leaves no database in the cache."""
+    import json
+    import os
+    import subprocess
+    import sys
+    path = _write(tmp_path, "rooms6", generate_manipulation(6))
+    cache = tmp_path / "cache"
+    out = subprocess.run([sys.executable, "-m", "bcc", "solve", path, "--json", "--time-limit", "0.5"],
+                         capture_output=True, text=True, env={**os.environ, "BCC_CACHE_DIR": str(cache)})
+    assert out.returncode == 1, out.stderr
+    assert json.loads(out.stdout)["status"] == "budget"
+    assert not list(cache.glob("counting/*.pickle"))
