@@ -28,7 +28,7 @@ class JobProcess:
 
     def __init__(self, task: str, spec: dict, memory_mb: float, wall_seconds: float):
         from . import worker
-        self.wall_seconds = wall_seconds
+        self.wall_seconds, self.memory_mb = wall_seconds, memory_mb
         self._recv, send = _CTX.Pipe(duplex=False)
         self._killed = threading.Event()
         self._process = _CTX.Process(target=worker.main, args=(send, task, spec, memory_mb), daemon=True)
@@ -71,7 +71,10 @@ class JobProcess:
         if message is None:
             code = self._process.exitcode
             how = f"was killed by signal {-code}" if code is not None and code < 0 else f"exited with code {code}"
-            return Outcome("failed", f"the job's process {how} before it reported (out of memory?)")
+            # Under its address-space cap, an allocation that fails in C (not as a Python
+            # MemoryError) ends the process by a signal: the likely cause, said as such.
+            return Outcome("failed", f"the job's process {how} before it reported, most likely at its memory limit "
+                                     f"of {self.memory_mb:g} MB")
         return Outcome(*message)
 
 
