@@ -19,6 +19,16 @@ from ..model import Model
 from .base import Meter, Result, budget_result, parent_plan
 
 
+def run_length(meter: Meter, max_states: int | None, stored: int, widest: int) -> int:
+    """States to expand in one call of a generated expander: a progress report's worth,
+    but no more than the state budget can take when each makes `widest` children (so a
+    budget is overshot by at most one expansion's children)."""
+    run = meter.mask + 1
+    if max_states is not None:
+        run = max(1, min(run, (max_states - stored) // widest))
+    return run
+
+
 def layered(model: Model, meter: Meter, name: str, lifo: bool, **fields) -> Result:
     """Search `model` layer by layer: last in, first out within a layer (`lifo`: the order
     A*'s buckets give) or first in, first out (breadth-first). `fields`: further Result
@@ -42,10 +52,7 @@ def layered(model: Model, meter: Meter, name: str, lifo: bool, **fields) -> Resu
                 states.reverse()
             at = 0
             while at < len(states):
-                run = meter.mask + 1
-                if max_states is not None:
-                    run = max(1, min(run, (max_states - len(parents)) // widest))
-                chunk = states[at:at + run]
+                chunk = states[at:at + run_length(meter, max_states, len(parents), widest)]
                 at += len(chunk)
                 k = expand(chunk, parents, below)
                 if k < 0:

@@ -17,6 +17,7 @@ import heapq
 
 from ..model import Model
 from .base import Meter, Result, budget_result, parent_plan
+from .layers import run_length
 
 
 def uniform_cost(model: Model, meter: Meter, name: str, expander, levels: tuple) -> Result:
@@ -44,10 +45,7 @@ def uniform_cost(model: Model, meter: Meter, name: str, expander, levels: tuple)
             outs = [[] for _ in levels]
             at = 0
             while at < len(states):
-                run = meter.mask + 1
-                if max_states is not None:
-                    run = max(1, min(run, (max_states - len(nodes)) // widest))
-                chunk = states[at:at + run]
+                chunk = states[at:at + run_length(meter, max_states, len(nodes), widest)]
                 at += len(chunk)
                 generated += expander(chunk, g, nodes, outs)
                 expanded += len(chunk)
