@@ -120,23 +120,23 @@ def main(argv=None) -> int:
     command_ms = 1000 * (time.process_time() - t0) / len(sample)
     print(f"training on all {len(rows)} pairs: {train_cpu:.1f} s CPU; one command: {command_ms:.2f} ms CPU",
           file=sys.stderr)
-    head = f"{'model':<40}" + "".join(f"{lv:>8}" for lv in levels) + f"{'all':>8}"
+    head = f"{'model':<50}" + "".join(f"{lv:>8}" for lv in levels) + f"{'all':>8}"
     shuffles = f"mean of {len(seeds)} shuffles (seeds {', '.join(map(str, seeds))})" if len(seeds) > 1 \
         else f"seed {seeds[0]}"
     print(f"{len(rows)} pairs, {folds}-fold cross-validation, {shuffles}, accuracy %")
     print(head)
     for name, figs in PUBLISHED.items():
-        print(f"{name + ' (published, per level)':<40}" + "".join(f"{figs.get(lv, float('nan')):8.1f}" for lv in levels))
-    print(f"{'target':<40}" + "".join(f"{TARGET.get(lv, float('nan')):8.1f}" for lv in levels))
+        print(f"{name + ' (published, per level)':<50}" + "".join(f"{figs.get(lv, float('nan')):8.1f}" for lv in levels))
+    print(f"{'target':<50}" + "".join(f"{TARGET.get(lv, float('nan')):8.1f}" for lv in levels))
     for mode, e in results.items():
         if len(seeds) > 1:
             for seed, one in e["by_seed"].items():
-                print(f"{'bcc --from ' + mode + ' (pooled, seed ' + seed + ')':<40}"
+                print(f"{'bcc --from ' + mode + ' (pooled, seed ' + seed + ')':<50}"
                       + "".join(f"{one['pooled'][lv]:8.1f}" for lv in levels) + f"{one['overall']:8.1f}")
-        print(f"{'bcc --from ' + mode + ' (pooled levels' + (', mean)' if len(seeds) > 1 else ')'):<40}"
+        print(f"{'bcc --from ' + mode + ' (pooled levels' + (', mean)' if len(seeds) > 1 else ')'):<50}"
               + "".join(f"{e['pooled'][lv]:8.1f}" for lv in levels) + f"{e['overall']:8.1f}")
         if "per_level" in e:
-            print(f"{'bcc --from ' + mode + f' (per level, seed {seeds[0]})':<40}" + "".join(f"{e['per_level'][lv]:8.1f}" for lv in levels))
+            print(f"{'bcc --from ' + mode + f' (per level, seed {seeds[0]})':<50}" + "".join(f"{e['per_level'][lv]:8.1f}" for lv in levels))
     out = {"pairs": args.pairs, "count": len(rows), "model": MODEL, "folds": folds, "seeds": seeds, "published": PUBLISHED,
            "target": TARGET, "results": results,
            "train_all_cpu_seconds": round(train_cpu, 2), "command_cpu_ms": round(command_ms, 3),
