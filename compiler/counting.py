@@ -57,6 +57,7 @@ class TooBig(Exception):
         self.timed_out = timed_out
 
 
+TOUCH_CAP = 4  # counts are seen up to this many (cells one action touches; more: memoized by the part)
 SHIFT = 24     # an abstract state's number: variables id << SHIFT | cell part id
 
 
@@ -375,25 +376,29 @@ class _Builder:
 
     # ---- the exploration ----------------------------------------------------------------
     def run(self) -> CountingDatabase:
-        """Explore the abstract states from the start's, then search backward by cost.
-        A state is numbered by its variables' id and its cell part's id (the exact
-        cells, then the counts, 2 bytes each). What an action does depends on the
-        variables and the touched cells' values only, and what a change does to the
-        cells on the cell part only: both are memoized by id."""
+        """Explore the abstract states from the start's, a layer at a time, then search
+        backward by cost. A state is numbered by its variables' id and its cell part's
+        id (the exact cells, then the counts, 2 bytes each): `vid << SHIFT | rid`.
+
+        Actions that touch no mutable cell (turning, looking) move from variables to
+        variables whatever the cells hold: their successors are a table by variables id,
+        applied to a whole layer at once in numpy. What the other actions do depends on
+        the variables and, of the cell part, only on the bytes their touched cells'
+        values are read from (the *view*, `_seen`): memoized by (variables id, view); what
+        a change does to the cells depends on the cell part only, memoized by id."""
+        import numpy as np
         from ..model import cell_entries
-        n_exact = len(self.exact)
         variables = {self.initial: 0}
-        var_list = [self.initial]
+        var_list = self.var_list = [self.initial]
         parts = {self.start_exact + bytes(2 * self.n_slots): 0}
         part_list = list(parts)
-        ids = {0: 0}
-        states = [0]
-        src, dst, cost_of = array.array("i"), array.array("i"), array.array("d")
-        goals = []
-        plans: list = []         # by variables id: [(action, touched cells, kinds, next variables id | None)]
-        outcomes: dict = {}      # (action, variables id, values of the touched cells) -> (next variables id, changes) | None
-        moved: dict = {}         # (cell part id, changes) -> next cell part id
+        seen_of = [self._seen(part_list[0])]   # by cell part id: what the touched cells may hold
+        views: list = []         # by variables id: (view function, its actions that touch cells)
+        free_ptr, free_dst, free_cost = [0], [], []   # by variables id: successors of the others
+        successors: dict = {}    # (variables id, view) -> ((next variables id, changes, cost), ...)
         choices_of: dict = {}    # (cell part id, kinds) -> the value choices of the touched cells
+        outcomes: dict = {}      # (action, variables id, values of the touched cells) -> ((next variables id, changes), ...)
+        moved: dict = {}         # (cell part id, changes) -> next cell part id
         goal_memo: dict = {}
         goal_class: list = []    # by variables id: the id of the goal's variables' values
         goal_classes: dict = {}
@@ -412,81 +417,158 @@ class _Builder:
                 var_list.append(vb)
             return found
 
-        u = 0
-        while u < len(states):
-            if u & 1023 == 0 and time.process_time() > deadline:
-                raise TooBig("the time limit ran out", timed_out=True)
-            s = states[u]
-            vid, rid = s >> SHIFT, s & mask
-            while vid >= len(plans):   # the variables' plan and goal class, once each
-                vb = var_list[len(plans)]
-                plan = self._plan(vb, cell_entries, check_cells)
-                plans.append([(i, t, k, None if f is None else tuple(var_id(x) for x in f)) for i, t, k, f in plan])
-                gk = goal_of(vb)
-                goal_class.append(goal_classes.setdefault(gk, len(goal_classes)))
-            gkey = goal_class[vid] << SHIFT | rid
-            g = goal_memo.get(gkey)
-            if g is None:
-                g = goal_memo[gkey] = self._goal(var_list[vid], part_list[rid])
-            if g:
-                goals.append(u)
-            for i, touched, kinds, free in plans[vid]:
-                if free is not None:   # touches no mutable cell: the outcomes are known
-                    for nvid in free:
-                        nkey = nvid << SHIFT | rid
-                        v = ids.get(nkey)
-                        if v is None:
-                            v = ids[nkey] = len(states)
-                            states.append(nkey)
-                        if v != u:
-                            src.append(u)
-                            dst.append(v)
-                            if not uniform:
-                                cost_of.append(costs[i])
+        known = np.zeros(1, dtype=np.int64)          # every state met, sorted
+        frontier = known
+        edge_src, edge_dst, edge_cost, goals = [], [], [], []
+        fptr, fdst, fcost = np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0)
+        while len(frontier):
+            keys = frontier.tolist()
+            vmax = int(frontier.max()) >> SHIFT
+            while vmax >= len(views):   # the variables' plan and goal class, once each
+                vb = var_list[len(views)]
+                view_of, cell_plan, free = self._view(self._plan(vb, cell_entries, check_cells), var_id, costs)
+                views.append((view_of, cell_plan))
+                free_dst.extend(nvid for nvid, _ in free)
+                free_cost.extend(c for _, c in free)
+                free_ptr.append(len(free_dst))
+                goal_class.append(goal_classes.setdefault(goal_of(vb), len(goal_classes)))
+            if len(fptr) != len(free_ptr):   # the new variables' rows
+                fptr = np.concatenate((fptr, np.array(free_ptr[len(fptr):], dtype=np.int64)))
+                fdst = np.concatenate((fdst, np.array(free_dst[len(fdst):], dtype=np.int64) << SHIFT))
+                fcost = np.concatenate((fcost, np.array(free_cost[len(fcost):], dtype=np.float64)))
+            src, dst, cost = array.array("q"), array.array("q"), array.array("d")
+            for n, key in enumerate(keys):
+                if n & 8191 == 8191 and time.process_time() > deadline:
+                    raise TooBig("the time limit ran out", timed_out=True)
+                vid, rid = key >> SHIFT, key & mask
+                gkey = goal_class[vid] << SHIFT | rid
+                g = goal_memo.get(gkey)
+                if g is None:
+                    g = goal_memo[gkey] = self._goal(var_list[vid], part_list[rid])
+                if g:
+                    goals.append(key)
+                view_of, cell_plan = views[vid]
+                if not cell_plan:
                     continue
-                ckey = (rid, kinds)
-                options = choices_of.get(ckey)
-                if options is None:
-                    options = choices_of[ckey] = self._choices(part_list[rid], touched, kinds)
-                for choice in options:
-                    okey = (i, vid, choice)
-                    outs = outcomes.get(okey)
-                    if outs is None:
-                        found = self._outcome(i, var_list[vid], touched, choice, cell_entries)
-                        outs = outcomes[okey] = tuple((var_id(f[0]), f[1]) for f in found)
-                    for nvid, changes in outs:
-                        if changes:
-                            mkey = (rid, changes)
-                            nrid = moved.get(mkey)
+                skey = (vid, view_of(seen_of[rid])) if view_of is not None else (vid, None, rid)
+                succ = successors.get(skey)
+                if succ is None:
+                    succ = successors[skey] = self._cell_successors(vid, rid, part_list[rid], cell_plan, var_id,
+                                                                    costs, cell_entries, choices_of, outcomes)
+                for nvid, changes, c in succ:
+                    if changes:
+                        mkey = (rid, changes)
+                        nrid = moved.get(mkey)
+                        if nrid is None:
+                            nb = self._moved(part_list[rid], changes)
+                            nrid = parts.get(nb)
                             if nrid is None:
-                                nb = self._moved(part_list[rid], changes)
-                                nrid = parts.get(nb)
-                                if nrid is None:
-                                    nrid = parts[nb] = len(part_list)
-                                    part_list.append(nb)
-                                moved[mkey] = nrid
-                        else:
-                            nrid = rid
-                        nkey = nvid << SHIFT | nrid
-                        v = ids.get(nkey)
-                        if v is None:
-                            v = ids[nkey] = len(states)
-                            states.append(nkey)
-                        if v != u:
-                            src.append(u)
-                            dst.append(v)
-                            if not uniform:
-                                cost_of.append(costs[i])
-            if len(states) > max_states or len(part_list) > mask:
+                                nrid = parts[nb] = len(part_list)
+                                part_list.append(nb)
+                                seen_of.append(self._seen(nb))
+                            moved[mkey] = nrid
+                    else:
+                        nrid = rid
+                    nkey = nvid << SHIFT | nrid
+                    if nkey != key:
+                        src.append(key)
+                        dst.append(nkey)
+                        cost.append(c)
+            # the actions that touch no cell, for the whole layer
+            vids, rids = frontier >> SHIFT, frontier & mask
+            lo, hi = fptr[vids], fptr[vids + 1]
+            total = hi - lo
+            idx = np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum())
+            layer_dst = np.concatenate((fdst[idx] | np.repeat(rids, total), np.frombuffer(dst, dtype=np.int64)))
+            edge_src.append(np.concatenate((np.repeat(frontier, total), np.frombuffer(src, dtype=np.int64))))
+            edge_dst.append(layer_dst)
+            if not uniform:
+                edge_cost.append(np.concatenate((fcost[idx], np.frombuffer(cost, dtype=np.float64))))
+            met = _unique(layer_dst)
+            pos = np.searchsorted(known, met)
+            fresh = (pos >= len(known)) | (known[np.minimum(pos, len(known) - 1)] != met)
+            frontier = met[fresh]
+            known = np.insert(known, pos[fresh], frontier)
+            if len(known) > max_states or len(part_list) > mask:
                 raise TooBig(f"more than {max_states:,} abstract states")
-            u += 1
+            if time.process_time() > deadline:
+                raise TooBig("the time limit ran out", timed_out=True)
+        s_idx = np.searchsorted(known, np.concatenate(edge_src)).astype(np.int32)
+        d_idx = np.searchsorted(known, np.concatenate(edge_dst)).astype(np.int32)
         if uniform:
-            cost_of = array.array("d", [costs[self.search[0]] if self.search else 1]) * len(src)
-        dist = _backward(len(states), src, dst, cost_of, goals)
-        table = {k: (d if d == math.inf or d != int(d) else int(d)) for k, d in zip(states, dist)}
+            c_all = np.full(len(s_idx), float(costs[self.search[0]] if self.search else 1))
+        else:
+            c_all = np.concatenate(edge_cost)
+        dist = _backward(len(known), s_idx, d_idx, c_all, np.searchsorted(known, np.array(goals, dtype=np.int64)))
+        table = dict(zip(known.tolist(), _numbers(dist)))
         return CountingDatabase(self.base, dict(self.exact), self.start_exact, dict(self.tracked), self.n_slots,
-                                variables, parts, table, len(states),
+                                variables, parts, table, len(known),
                                 tuple((j, self.initial[j]) for j, _ in self.projected))
+
+    def _seen(self, part: bytes) -> bytes:
+        """What a cell part tells an action about the cells it touches: the exact cells'
+        values, then per count slot and per class's cells still at their start value, the
+        count capped at the most cells an action touches (`_choices` and `_feasible` read
+        no more than that)."""
+        n_exact = len(self.exact)
+        counts = self._counts(part)
+        cap = TOUCH_CAP
+        free = [len(mm) - sum(counts[s] for s in slots.values()) for mm, slots in zip(self.members, self.slot_of_class)]
+        return part[:n_exact] + bytes(min(c, cap) for c in counts) + bytes(min(f, cap) for f in free)
+
+    def _view(self, plan: list, var_id, costs) -> tuple:
+        """For one variables' plan: the function giving a cell part's view (the bytes of
+        `_seen` the touched cells' values are read from), the actions that touch cells,
+        and the successors of those that touch none ((next variables id, cost), each once)."""
+        n_exact = len(self.exact)
+        at: set = set()
+        cell_plan, free = [], {}
+        for i, touched, kinds, nxt in plan:
+            if nxt is not None:
+                for x in nxt:
+                    free.setdefault((var_id(x), costs[i]), None)
+                continue
+            cell_plan.append((i, touched, kinds))
+            for kind, k in kinds:
+                if kind == "e":
+                    at.add(k)
+                else:
+                    at.update(n_exact + slot for slot in self.slot_of_class[k].values())
+                    at.add(n_exact + self.n_slots + k)
+        wide = any(len(touched) > TOUCH_CAP for _, touched, _ in cell_plan)
+        at_sorted = sorted(at)
+        if len(at_sorted) > 1:
+            view_of = operator.itemgetter(*at_sorted)
+        elif at_sorted:
+            j = at_sorted[0]
+            view_of = lambda part: part[j]   # noqa: E731 (one byte)
+        else:
+            view_of = lambda part: ()        # noqa: E731
+        if wide:   # more cells than the seen counts tell apart: memoized by the cell part itself
+            view_of = None
+        return view_of, tuple(cell_plan), tuple(free)
+
+    def _cell_successors(self, vid, rid, part, cell_plan, var_id, costs, cell_entries, choices_of, outcomes) -> tuple:
+        """(next variables id, changes, cost) of every action that touches cells, from
+        these variables and this cell part; a move back to the same abstract state is
+        left out. The touched cells' possible values are memoized by (cell part, cells),
+        an action's outcomes by (action, variables, the cells' values)."""
+        out = {}
+        for i, touched, kinds in cell_plan:
+            ckey = (rid, kinds)
+            options = choices_of.get(ckey)
+            if options is None:
+                options = choices_of[ckey] = self._choices(part, touched, kinds)
+            for choice in options:
+                okey = (i, vid, choice)
+                outs = outcomes.get(okey)
+                if outs is None:
+                    outs = outcomes[okey] = tuple((var_id(nxt), changes) for nxt, changes
+                                                  in self._outcome(i, self.var_list[vid], touched, choice, cell_entries))
+                for nvid, changes in outs:
+                    if nvid != vid or changes:
+                        out.setdefault((nvid, changes, costs[i]), None)
+        return tuple(out)
 
     def _counts(self, rest: bytes) -> array.array:
         return array.array("H", rest[len(self.exact):])
@@ -630,11 +712,11 @@ def _backward(n: int, src, dst, cost, goals) -> list:
     """Cheapest cost from each abstract state to a goal state (math.inf: none)."""
     import numpy as np
     dist = np.full(n, np.inf)
-    if not goals:
+    if not len(goals):
         return dist.tolist()
-    s = np.frombuffer(src, dtype=np.int32)
-    d = np.frombuffer(dst, dtype=np.int32)
-    c = np.frombuffer(cost, dtype=np.float64)
+    s = np.asarray(src, dtype=np.int32)
+    d = np.asarray(dst, dtype=np.int32)
+    c = np.asarray(cost, dtype=np.float64)
     order = np.argsort(d, kind="stable")
     s, d, c = s[order], d[order], c[order]
     starts = np.searchsorted(d, np.arange(n + 1))
@@ -643,7 +725,7 @@ def _backward(n: int, src, dst, cost, goals) -> list:
     if len(c) and np.all(c == c[0]) and c[0] > 0:
         # Equal costs: breadth-first, one frontier at a time, in numpy.
         step = c[0]
-        frontier = np.unique(g)
+        frontier = _unique(g)
         level = 0.0
         while len(frontier):
             level += step
@@ -652,7 +734,7 @@ def _backward(n: int, src, dst, cost, goals) -> list:
                 break
             total = hi - lo
             idx = np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum())
-            preds = np.unique(s[idx])
+            preds = _unique(s[idx])
             preds = preds[dist[preds] == np.inf]
             dist[preds] = level
             frontier = preds
@@ -671,6 +753,28 @@ def _backward(n: int, src, dst, cost, goals) -> list:
             if nd < out[v]:
                 out[v] = nd
                 heapq.heappush(heap, (nd, v))
+    return out
+
+
+def _unique(a):
+    """The sorted distinct values of an integer array (np.unique by a sort: its hash-based
+    path was 20x slower on these arrays)."""
+    import numpy as np
+    a = np.sort(a)
+    return a[np.concatenate(([True], a[1:] != a[:-1]))] if len(a) else a
+
+
+def _numbers(dist) -> list:
+    """Distances as Python numbers: ints where whole (the usual case), math.inf where no
+    goal is reachable."""
+    import numpy as np
+    d = np.asarray(dist, dtype=np.float64)
+    finite = np.isfinite(d)
+    if not np.array_equal(d[finite], np.floor(d[finite])):
+        return [x if x == math.inf or x != int(x) else int(x) for x in d.tolist()]
+    out = np.where(finite, d, 0).astype(np.int64).tolist()
+    for j in np.flatnonzero(~finite).tolist():
+        out[j] = math.inf
     return out
 
 
