@@ -330,17 +330,19 @@ class _Builder:
                 reads(c, self.an, lets, r)
             effect_reads_writes(a.effects, self.an, lets, r, w)
             kidx = sorted({self.L.by_var[v].index for v in r | w if v in self.L.by_var})
-            self.key_of[i] = operator.itemgetter(*kidx) if kidx else (lambda vb: ())
+            self.key_of[i] = _getter(kidx)
             self.writes_of[i] = sorted(self.L.by_var[v].index for v in w if v in self.L.by_var)
         self.touch_memo: dict = {}
+        self.touch_key = {i: _getter(self.touch_vars[i][0]) for i in self.search}
 
     def touched(self, i: int, vars_: bytes) -> tuple:
-        """The mutable cells action i may read or write when the variables are `vars_`."""
-        idx, cells, lets = self.touch_vars[i]
-        key = (i, bytes(vars_[j] for j in idx))
+        """The mutable cells action i may read or write when the variables are `vars_`,
+        and for each whether it is exact (its position) or counted (its class)."""
+        key = (i, self.touch_key[i](vars_))
         found = self.touch_memo.get(key)
         if found is not None:
             return found
+        idx, cells, lets = self.touch_vars[i]
         sets = {s.var: frozenset({vars_[s.index] + s.lo}) for s in self.L.slots}
         ab = Abstract(lets, lambda x, y, z: None, None, sets=sets, var_at=self.an.var_at)
         out = set()
@@ -352,7 +354,9 @@ class _Builder:
                 m = self._mutable(x, y, z)
                 if m is not None:
                     out.add(m)
-        found = self.touch_memo[key] = tuple(sorted(out))
+        touched = tuple(sorted(out))
+        kinds = tuple(("e", self.exact[m]) if m in self.exact else ("c", self.class_of[m]) for m in touched)
+        found = self.touch_memo[key] = (touched, kinds)
         return found
 
     # ---- concrete states from abstract ones ------------------------------------------
@@ -392,7 +396,9 @@ class _Builder:
         var_list = self.var_list = [self.initial]
         parts = {self.start_exact + bytes(2 * self.n_slots): 0}
         part_list = list(parts)
-        seen_of = [self._seen(part_list[0])]   # by cell part id: what the touched cells may hold
+        # by cell part id, what the touched cells may hold: counts capped at 1 (for plans
+        # whose actions touch one cell each) and at TOUCH_CAP
+        seen_one, seen_more = [self._seen(part_list[0], 1)], [self._seen(part_list[0], TOUCH_CAP)]
         views: list = []         # by variables id: (view function, its actions that touch cells)
         free_ptr, free_dst, free_cost = [0], [], []   # by variables id: successors of the others
         successors: dict = {}    # (variables id, view) -> ((next variables id, changes, cost), ...)
@@ -402,8 +408,10 @@ class _Builder:
         goal_memo: dict = {}
         goal_class: list = []    # by variables id: the id of the goal's variables' values
         goal_classes: dict = {}
+        goal_vars: list = []     # by goal class: a variables id of that class
+        gclass = np.zeros(0, dtype=np.int64)
         goal_idx = sorted(self.L.by_var[v].index for v in self.goal_vars if v in self.L.by_var)
-        goal_of = operator.itemgetter(*goal_idx) if goal_idx else (lambda v: ())
+        goal_of = _getter(goal_idx)
         costs = [a.cost for a in self.actions]
         check_cells = self.failure_reads_cells
         max_states, deadline = self.max_states, self.deadline
@@ -426,12 +434,16 @@ class _Builder:
             vmax = int(frontier.max()) >> SHIFT
             while vmax >= len(views):   # the variables' plan and goal class, once each
                 vb = var_list[len(views)]
-                view_of, cell_plan, free = self._view(self._plan(vb, cell_entries, check_cells), var_id, costs)
-                views.append((view_of, cell_plan))
+                view_of, cell_plan, free, cap = self._view(self._plan(vb, cell_entries, check_cells), var_id, costs)
+                views.append((view_of, cell_plan, seen_one if cap == 1 else seen_more))
                 free_dst.extend(nvid for nvid, _ in free)
                 free_cost.extend(c for _, c in free)
                 free_ptr.append(len(free_dst))
-                goal_class.append(goal_classes.setdefault(goal_of(vb), len(goal_classes)))
+                gk = goal_of(vb)
+                if gk not in goal_classes:
+                    goal_classes[gk] = len(goal_classes)
+                    goal_vars.append(len(views) - 1)   # a variables id with these goal values
+                goal_class.append(goal_classes[gk])
             if len(fptr) != len(free_ptr):   # the new variables' rows
                 fptr = np.concatenate((fptr, np.array(free_ptr[len(fptr):], dtype=np.int64)))
                 fdst = np.concatenate((fdst, np.array(free_dst[len(fdst):], dtype=np.int64) << SHIFT))
@@ -441,13 +453,7 @@ class _Builder:
                 if n & 8191 == 8191 and time.process_time() > deadline:
                     raise TooBig("the time limit ran out", timed_out=True)
                 vid, rid = key >> SHIFT, key & mask
-                gkey = goal_class[vid] << SHIFT | rid
-                g = goal_memo.get(gkey)
-                if g is None:
-                    g = goal_memo[gkey] = self._goal(var_list[vid], part_list[rid])
-                if g:
-                    goals.append(key)
-                view_of, cell_plan = views[vid]
+                view_of, cell_plan, seen_of = views[vid]
                 if not cell_plan:
                     continue
                 skey = (vid, view_of(seen_of[rid])) if view_of is not None else (vid, None, rid)
@@ -465,7 +471,8 @@ class _Builder:
                             if nrid is None:
                                 nrid = parts[nb] = len(part_list)
                                 part_list.append(nb)
-                                seen_of.append(self._seen(nb))
+                                seen_one.append(self._seen(nb, 1))
+                                seen_more.append(self._seen(nb, TOUCH_CAP))
                             moved[mkey] = nrid
                     else:
                         nrid = rid
@@ -474,8 +481,19 @@ class _Builder:
                         src.append(key)
                         dst.append(nkey)
                         cost.append(c)
-            # the actions that touch no cell, for the whole layer
             vids, rids = frontier >> SHIFT, frontier & mask
+            # the goal test, once per (the goal's variables' values, cell part)
+            if len(gclass) != len(goal_class):
+                gclass = np.concatenate((gclass, np.array(goal_class[len(gclass):], dtype=np.int64)))
+            gkeys = gclass[vids] << SHIFT | rids
+            distinct = _unique(gkeys)
+            for gkey in distinct.tolist():
+                if gkey not in goal_memo:
+                    goal_memo[gkey] = bool(self._goal(var_list[goal_vars[gkey >> SHIFT]], part_list[gkey & mask]))
+            met_goal = np.array([goal_memo[g] for g in distinct.tolist()], dtype=bool)
+            goals.append(frontier[met_goal[np.searchsorted(distinct, gkeys)]])
+            # the actions that touch no cell, for the whole layer
+
             lo, hi = fptr[vids], fptr[vids + 1]
             total = hi - lo
             idx = np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum())
@@ -499,20 +517,18 @@ class _Builder:
             c_all = np.full(len(s_idx), float(costs[self.search[0]] if self.search else 1))
         else:
             c_all = np.concatenate(edge_cost)
-        dist = _backward(len(known), s_idx, d_idx, c_all, np.searchsorted(known, np.array(goals, dtype=np.int64)))
+        dist = _backward(len(known), s_idx, d_idx, c_all, np.searchsorted(known, np.concatenate(goals)))
         table = dict(zip(known.tolist(), _numbers(dist)))
         return CountingDatabase(self.base, dict(self.exact), self.start_exact, dict(self.tracked), self.n_slots,
                                 variables, parts, table, len(known),
                                 tuple((j, self.initial[j]) for j, _ in self.projected))
 
-    def _seen(self, part: bytes) -> bytes:
-        """What a cell part tells an action about the cells it touches: the exact cells'
-        values, then per count slot and per class's cells still at their start value, the
-        count capped at the most cells an action touches (`_choices` and `_feasible` read
-        no more than that)."""
+    def _seen(self, part: bytes, cap: int) -> bytes:
+        """What a cell part tells actions that touch at most `cap` cells each: the exact
+        cells' values, then per count slot and per class's cells still at their start
+        value, the count capped at `cap` (`_choices` and `_feasible` read no more)."""
         n_exact = len(self.exact)
         counts = self._counts(part)
-        cap = TOUCH_CAP
         free = [len(mm) - sum(counts[s] for s in slots.values()) for mm, slots in zip(self.members, self.slot_of_class)]
         return part[:n_exact] + bytes(min(c, cap) for c in counts) + bytes(min(f, cap) for f in free)
 
@@ -535,18 +551,11 @@ class _Builder:
                 else:
                     at.update(n_exact + slot for slot in self.slot_of_class[k].values())
                     at.add(n_exact + self.n_slots + k)
-        wide = any(len(touched) > TOUCH_CAP for _, touched, _ in cell_plan)
-        at_sorted = sorted(at)
-        if len(at_sorted) > 1:
-            view_of = operator.itemgetter(*at_sorted)
-        elif at_sorted:
-            j = at_sorted[0]
-            view_of = lambda part: part[j]   # noqa: E731 (one byte)
-        else:
-            view_of = lambda part: ()        # noqa: E731
-        if wide:   # more cells than the seen counts tell apart: memoized by the cell part itself
+        cap = max((len(touched) for _, touched, _ in cell_plan), default=0)
+        view_of = _getter(sorted(at))
+        if cap > TOUCH_CAP:   # more cells than the seen counts tell apart: memoized by the cell part itself
             view_of = None
-        return view_of, tuple(cell_plan), tuple(free)
+        return view_of, tuple(cell_plan), tuple(free), cap
 
     def _cell_successors(self, vid, rid, part, cell_plan, var_id, costs, cell_entries, choices_of, outcomes) -> tuple:
         """(next variables id, changes, cost) of every action that touches cells, from
@@ -585,8 +594,7 @@ class _Builder:
         if not check_cells and not self.failure_projected and self.is_failure(self.concrete(vars_, {})):
             return out   # the search never expands a failed state (it is a goal, or dropped)
         for i in self.search:
-            touched = self.touched(i, vars_)
-            kinds = tuple(("e", self.exact[m]) if m in self.exact else ("c", self.class_of[m]) for m in touched)
+            touched, kinds = self.touched(i, vars_)
             free = None
             if not touched:
                 found = self._outcome(i, vars_, (), (), cell_entries)
@@ -762,6 +770,16 @@ def _unique(a):
     import numpy as np
     a = np.sort(a)
     return a[np.concatenate(([True], a[1:] != a[:-1]))] if len(a) else a
+
+
+def _getter(indices):
+    """A function from bytes to the values at `indices`, as one hashable value."""
+    if len(indices) > 1:
+        return operator.itemgetter(*indices)
+    if indices:
+        j = indices[0]
+        return lambda b: b[j]
+    return lambda b: ()
 
 
 def _numbers(dist) -> list:
