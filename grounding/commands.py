@@ -97,6 +97,7 @@ def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
     rows = []
     for path in pairs_paths:
         given = pairs.load(path, dungeon)
+        _say_inferred(path, given)
         pairs.check_tasks(given)
         rows += [{"command": r["command"], "dungeon": r["dungeon"], "explanations": [{"task": r["task"], "weight": 1.0}]}
                  for r in given]
@@ -253,7 +254,10 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     if test_path and folds:
         raise BccError("give --test FILE or --folds K, not both")
     train_rows = pairs.load(train_path, dungeon, levels)
+    _say_inferred(train_path, train_rows)
     test_rows = pairs.load(test_path, dungeon, levels) if test_path else None
+    if test_rows:
+        _say_inferred(test_path, test_rows)
     pairs.check_tasks(train_rows + (test_rows or []))
     splits = [(train_rows, test_rows)] if test_rows else pairs.folds(train_rows, folds or 10, seed)
     modes = list(pairs.MODES) if mode == "both" else [mode]
@@ -270,6 +274,14 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     click.echo(f"confusion (from {reports[0]['mode']}): task -> predicted, count")
     for c in reports[0]["confusion"]:
         click.echo(f"  {'ok ' if c['task'] == c['predicted'] else '   '}{c['count']:5d}  {c['task']}  ->  {c['predicted']}")
+
+
+def _say_inferred(path, rows) -> None:
+    """A note on stderr where pairs name no dungeon and bcc chose one from their tasks."""
+    chosen = sorted({r["dungeon"] for r in rows if r.get("inferred")})
+    if chosen:
+        click.echo(f"{path}: pairs with no dungeon are read in {chosen[0]!r}, the shipped dungeon that has "
+                   f"all their tasks (--dungeon chooses another)", err=True)
 
 
 def _evaluate_shipped(as_json):

@@ -22,7 +22,9 @@ MODES = ("tasks", "demonstrations")
 
 def load(path: str | Path, dungeon: str | None = None, levels=None) -> list[dict]:
     """The pairs of a file, each with `id`, `command`, `task` (canonical), `dungeon` and `level`;
-    every line checked (bad lines are bad input: file:line:col)."""
+    every line checked (bad lines are bad input: file:line:col). A line with no `dungeon`
+    is in `dungeon`, or else in the one shipped dungeon that has all such lines' tasks
+    (`inferred` is then set)."""
     text = read_input(path, "pairs")
     out = []
     for n, line in enumerate(text.splitlines(), 1):
@@ -38,9 +40,7 @@ def load(path: str | Path, dungeon: str | None = None, levels=None) -> list[dict
             if not isinstance(row.get(key), str) or not row[key].strip():
                 raise BccError(f"\"{key}\" must be a non-empty string", str(path), n, 1)
         ref = row.get("dungeon", dungeon)
-        if ref is None:
-            raise BccError("the pair names no dungeon: give one with --dungeon", str(path), n, 1)
-        if not isinstance(ref, str):
+        if ref is not None and not isinstance(ref, str):
             raise BccError("\"dungeon\" must be a string", str(path), n, 1)
         level = row.get("level")
         if level is not None and not isinstance(level, (str, int)) or isinstance(level, bool):
@@ -52,7 +52,32 @@ def load(path: str | Path, dungeon: str | None = None, levels=None) -> list[dict
                     "path": str(path)})
     if not out:
         raise BccError("no pairs" + (f" at level {', '.join(levels)}" if levels else ""), str(path))
+    missing = [r for r in out if r["dungeon"] is None]
+    if missing:
+        fits = dungeons_with({r["task"] for r in missing})
+        if len(fits) != 1:
+            which = f"several shipped dungeons have all the file's tasks ({', '.join(fits)})" if fits \
+                else "no shipped dungeon has all the file's tasks"
+            raise BccError(f"the pair names no dungeon and {which}: give one with --dungeon",
+                           str(path), missing[0]["line"], 1)
+        for r in missing:
+            r["dungeon"], r["inferred"] = fits[0], True
     return out
+
+
+def dungeons_with(tasks: set) -> list[str]:
+    """The shipped dungeons whose candidate tasks include all of `tasks`: pairs that name
+    no dungeon, such as the cleanup-amt corpus's, are read in the one their tasks are about."""
+    from ..compiler.dungeon import shipped_dungeons
+    fits = []
+    for ref in shipped_dungeons():
+        try:
+            known = set(candidates(ref))
+        except BccError:
+            continue
+        if tasks <= known:
+            fits.append(ref)
+    return fits
 
 
 def check_tasks(rows: list[dict]) -> None:

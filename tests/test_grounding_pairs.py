@@ -87,9 +87,15 @@ def test_bad_pairs_are_bad_input(tmp_path):
     bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)"\n')
     r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup")
     assert r.exit_code == 2 and "invalid JSON" in r.stderr
-    ok = write(tmp_path / "ok.jsonl", synthetic(10, 4))
-    r = run("corpus", "evaluate", "--train", ok)
-    assert r.exit_code == 2 and "--dungeon" in r.stderr
+    # No dungeon named and none given: the tasks must pick one shipped dungeon.
+    # agentInRoom(agent, red) is a task of cleanup and of manipulation (both have a red room):
+    two = write(tmp_path / "two.jsonl", [{"command": "go to the red room", "task": "agentInRoom(agent, red)"}] * 4)
+    r = run("corpus", "evaluate", "--train", two, "--folds", "2")
+    assert r.exit_code == 2 and "two.jsonl:1:1:" in r.stderr and "cleanup, manipulation" in r.stderr \
+        and "--dungeon" in r.stderr
+    none = write(tmp_path / "none.jsonl", [{"command": "go to the moon", "task": "agentOnBlock(agent, moon)"}])
+    r = run("corpus", "evaluate", "--train", none, "--folds", "2")
+    assert r.exit_code == 2 and "none.jsonl:1:1:" in r.stderr and "no shipped dungeon" in r.stderr
     assert run("corpus", "evaluate", "--folds", "3").exit_code == 2
     # A pair naming a dungeon that does not exist, or a level that is not a name: the pair's line.
     bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)"}\n'
@@ -99,6 +105,19 @@ def test_bad_pairs_are_bad_input(tmp_path):
     bad.write_text('{"command": "go", "task": "agentInRoom(agent, red)", "level": ["L1"]}\n')
     r = run("corpus", "evaluate", "--train", str(bad), "--dungeon", "cleanup", "--folds", "2")
     assert r.exit_code == 2 and "bad.jsonl:1:1:" in r.stderr and "level" in r.stderr
+
+
+def test_pairs_with_no_dungeon_are_read_in_the_one_their_tasks_fit(tmp_path):
+    # synthetic pairs move the chair: of the shipped dungeons only cleanup has a chair
+    train = write(tmp_path / "train.jsonl", synthetic(60, 5))
+    test = write(tmp_path / "test.jsonl", synthetic(20, 6))
+    r = run("corpus", "evaluate", "--train", train, "--test", test, "--from", "tasks", "--json")
+    assert r.exit_code == 0, r.output
+    assert "read in 'cleanup'" in r.stderr and json.loads(r.stdout)["by_level"]
+    named = run("corpus", "evaluate", "--train", train, "--test", test, "--from", "tasks", "--json",
+                "--dungeon", "cleanup")
+    assert named.exit_code == 0 and "read in" not in named.stderr
+    assert json.loads(named.stdout)["accuracy"] == json.loads(r.stdout)["accuracy"]
 
 
 def test_train_pairs_then_command_cleanup(tmp_path):
