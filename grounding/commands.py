@@ -125,6 +125,10 @@ def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
         return
     click.echo(f"trained on {len(rows)} pair(s), {len(model.vocabulary)} words, {model.iterations} iterations "
                f"in {seconds:.2f} s; stored in {data.path}")
+    if not with_corpus:
+        trained = sorted({r["dungeon"] for r in rows})
+        click.echo(f"note: this model replaces the shipped one and knows commands for {', '.join(trained)} only; "
+                   f"--corpus also trains on the shipped corpus (the other dungeons)", err=True)
 
 
 def _translation(db, model_path):

@@ -131,6 +131,9 @@ def test_train_pairs_then_command_cleanup(tmp_path):
     out = json.loads(r.stdout)
     assert out["task"] == "blockInRoom(chair, blue)" and out["solved"]
     assert out["cost"] == 20     # derived by hand in tests/test_cleanup.py
+    # without --corpus the new model knows only the pairs' dungeon, and says so
+    r = run("train", "--pairs", pairs, "--db", db)
+    assert r.exit_code == 0 and "knows commands for cleanup only" in r.stderr and "--corpus" in r.stderr
 
 
 def test_spelling_is_corrected_against_training_words():
