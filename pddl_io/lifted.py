@@ -156,7 +156,11 @@ def _define(tree, kind: str, path: str) -> SList:
         raise err(lists[1], message, path)
     d = lists[0]
     if len(d) < 2 or d[0] != "define" or not isinstance(d[1], SList) or len(d[1]) != 2 or d[1][0] != kind:
-        raise err(d, f"expected (define ({kind} NAME) ...)", path)
+        other = "problem" if kind == "domain" else "domain"
+        swapped = (len(d) >= 2 and d[0] == "define" and isinstance(d[1], SList) and len(d[1]) == 2
+                   and d[1][0] == other)
+        hint = f": this file defines a {other} (the domain file comes first: DOMAIN PROBLEM)" if swapped else ""
+        raise err(d, f"expected (define ({kind} NAME) ...){hint}", path)
     return d
 
 

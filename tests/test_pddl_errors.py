@@ -122,3 +122,14 @@ def test_a_directory_or_binary_file_is_one_line(tmp_path):
     r = subprocess.run([sys.executable, "-m", "bcc", "import", "pddl", str(tmp_path / "bin.pddl"),
                         str(HERE / "gripper-3.pddl")], capture_output=True, text=True)
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_swapped_files_say_the_domain_comes_first():
+    r = subprocess.run([sys.executable, "-m", "bcc", "import", "pddl", str(HERE / "gripper-3.pddl"),
+                        str(HERE / "gripper-domain.pddl")], capture_output=True, text=True)
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
+    assert "gripper-3.pddl:" in r.stderr and "this file defines a problem" in r.stderr and "DOMAIN PROBLEM" in r.stderr
+    # a file of neither kind gets no such hint
+    with pytest.raises(BccError) as err:
+        import_pddl(str(HERE / "gripper-domain.pddl"), str(HERE / "gripper-domain.pddl"))
+    assert "this file defines a domain" in err.value.message
