@@ -129,7 +129,7 @@ def test_swapped_files_say_the_domain_comes_first():
                         str(HERE / "gripper-domain.pddl")], capture_output=True, text=True)
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
     assert "gripper-3.pddl:" in r.stderr and "this file defines a problem" in r.stderr and "DOMAIN PROBLEM" in r.stderr
-    # a file of neither kind gets no such hint
+    # and a domain given as the problem
     with pytest.raises(BccError) as err:
         import_pddl(str(HERE / "gripper-domain.pddl"), str(HERE / "gripper-domain.pddl"))
     assert "this file defines a domain" in err.value.message
