@@ -393,13 +393,13 @@ class _Builder:
         import numpy as np
         from ..model import cell_entries
         variables = {self.initial: 0}
-        var_list = self.var_list = [self.initial]
+        var_list = [self.initial]
         parts = {self.start_exact + bytes(2 * self.n_slots): 0}
         part_list = list(parts)
         # by cell part id, what the touched cells may hold: counts capped at 1 (for plans
         # whose actions touch one cell each) and at TOUCH_CAP
         seen_one, seen_more = [self._seen(part_list[0], 1)], [self._seen(part_list[0], TOUCH_CAP)]
-        views: list = []         # by variables id: (view function, its actions that touch cells)
+        views: list = []         # by variables id: (view function, its actions that touch cells, seen list)
         free_ptr, free_dst, free_cost = [0], [], []   # by variables id: successors of the others
         successors: dict = {}    # (variables id, view) -> ((next variables id, changes, cost), ...)
         choices_of: dict = {}    # (cell part id, kinds) -> the value choices of the touched cells
@@ -459,8 +459,8 @@ class _Builder:
                 skey = (vid, view_of(seen_of[rid])) if view_of is not None else (vid, None, rid)
                 succ = successors.get(skey)
                 if succ is None:
-                    succ = successors[skey] = self._cell_successors(vid, rid, part_list[rid], cell_plan, var_id,
-                                                                    costs, cell_entries, choices_of, outcomes)
+                    succ = successors[skey] = self._cell_successors(vid, var_list[vid], rid, part_list[rid], cell_plan,
+                                                                    var_id, costs, cell_entries, choices_of, outcomes)
                 for nvid, changes, c in succ:
                     if changes:
                         mkey = (rid, changes)
@@ -493,7 +493,6 @@ class _Builder:
             met_goal = np.array([goal_memo[g] for g in distinct.tolist()], dtype=bool)
             goals.append(frontier[met_goal[np.searchsorted(distinct, gkeys)]])
             # the actions that touch no cell, for the whole layer
-
             lo, hi = fptr[vids], fptr[vids + 1]
             total = hi - lo
             idx = np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum())
@@ -557,7 +556,8 @@ class _Builder:
             view_of = None
         return view_of, tuple(cell_plan), tuple(free), cap
 
-    def _cell_successors(self, vid, rid, part, cell_plan, var_id, costs, cell_entries, choices_of, outcomes) -> tuple:
+    def _cell_successors(self, vid, vars_, rid, part, cell_plan, var_id, costs, cell_entries, choices_of,
+                         outcomes) -> tuple:
         """(next variables id, changes, cost) of every action that touches cells, from
         these variables and this cell part; a move back to the same abstract state is
         left out. The touched cells' possible values are memoized by (cell part, cells),
@@ -573,7 +573,7 @@ class _Builder:
                 outs = outcomes.get(okey)
                 if outs is None:
                     outs = outcomes[okey] = tuple((var_id(nxt), changes) for nxt, changes
-                                                  in self._outcome(i, self.var_list[vid], touched, choice, cell_entries))
+                                                  in self._outcome(i, vars_, touched, choice, cell_entries))
                 for nvid, changes in outs:
                     if nvid != vid or changes:
                         out.setdefault((nvid, changes, costs[i]), None)
