@@ -11,6 +11,7 @@ The search configuration is the `search` option, else the environment variable
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -59,6 +60,14 @@ class FdRun:
     seconds: float
     status: str         # "solved" | "no_solution" | "budget" | "error"
     message: str
+    expanded: int = 0   # Fast Downward's own counters (its last report), 0 where it printed none
+    generated: int = 0
+
+
+def _counter(out: str, what: str) -> int:
+    """The last 'Expanded N state(s).' (or Generated) Fast Downward printed."""
+    found = re.findall(rf"\b{what} (\d+) state", out)
+    return int(found[-1]) if found else 0
 
 
 def run(domain_file: str, problem_file: str, search: str | None = None, time_limit: float | None = None,
@@ -76,13 +85,15 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
         start = time.perf_counter()
         proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True)
         seconds = time.perf_counter() - start
+        counts = {"expanded": _counter(proc.stdout, "Expanded"), "generated": _counter(proc.stdout, "Generated")}
         if proc.returncode == 0 and os.path.exists(plan_file):
             plan, cost = _read_plan(plan_file, full_names)
-            return FdRun(True, plan, cost, seconds, "solved", "")
+            return FdRun(True, plan, cost, seconds, "solved", "", **counts)
         if proc.returncode in (11, 12):
-            return FdRun(False, [], None, seconds, "no_solution", "no plan exists (Fast Downward proved it)")
+            return FdRun(False, [], None, seconds, "no_solution", "no plan exists (Fast Downward proved it)", **counts)
         if proc.returncode in OUT_OF_BUDGET:
-            return FdRun(False, [], None, seconds, "budget", "stopped: Fast Downward ran out of time or memory")
+            return FdRun(False, [], None, seconds, "budget", "stopped: Fast Downward ran out of time or memory",
+                         **counts)
         said = [line.strip() for line in (proc.stderr.strip() or proc.stdout.strip()).splitlines()]
         tail = [line for line in said if line.strip("^~ ")][-3:]   # a caret line says nothing here
         return FdRun(False, [], None, seconds, "error",
@@ -100,7 +111,8 @@ def _unsolved(fd, seconds: float):
     if fd.status == "error":
         raise BccError(fd.message)
     return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
-                  budget="time_limit" if fd.status == "budget" else None)
+                  budget="time_limit" if fd.status == "budget" else None, expanded=fd.expanded,
+                  generated=fd.generated)
 
 
 def _solve_files(model, budget, files, search, start):
@@ -116,6 +128,7 @@ def _solve_files(model, budget, files, search, start):
     known = all(a in costs for a in fd.plan)
     cost = sum(costs[a] for a in fd.plan) if known else fd.cost
     return Result(solver="fd", solved=True, status="solved", plan=fd.plan, cost=cost, seconds=seconds,
+                  expanded=fd.expanded, generated=fd.generated,
                   message="Fast Downward on the PDDL files, search "
                           f"{search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")
 
@@ -201,4 +214,5 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
     plan = [a for a in (task.action_of(op) for op in fd.plan) if a is not None]
     cost = sum(model.action_costs[model.action_index(a)] for a in plan)
     return Result(solver="fd", solved=True, status="solved", plan=plan, cost=cost, seconds=seconds,
+                  expanded=fd.expanded, generated=fd.generated,
                   message=f"Fast Downward, search {search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")

@@ -97,6 +97,8 @@ def test_fd_solver_returns_a_bcc_result():
     reference = get_solver("bfs")(model, Budget(time_limit=60))
     assert result.solved and result.cost == reference.cost
     assert replay(model, [(a, k + 1, 1) for k, a in enumerate(result.plan)]).valid
+    # Fast Downward's own counters: A* expands every state of the plan but the last
+    assert result.expanded >= result.cost and result.generated >= result.expanded
 
 
 @pytest.mark.parametrize("domain,problem", [("gripper-domain", "gripper-3"), ("blocksworld-domain", "blocksworld-4"),
@@ -117,3 +119,10 @@ def test_a_bad_search_is_one_line_naming_what_fast_downward_did_not_know():
     line, = str(caught.value).strip().splitlines()
     assert line.startswith("Fast Downward failed") and "'nosuch'" in line
     assert "|  |" not in line and ":  |" not in line   # no empty piece where FD drew its caret
+
+
+def test_fast_downwards_counters_are_its_last_report():
+    out = ("[t=0.01s, 9 KB] Expanded 3 state(s).\n[t=0.02s, 9 KB] Generated 7 state(s).\n"
+           "[t=0.03s, 9 KB] Expanded 12 state(s).\n[t=0.03s, 9 KB] Generated 30 state(s).\n")
+    assert fast_downward._counter(out, "Expanded") == 12 and fast_downward._counter(out, "Generated") == 30
+    assert fast_downward._counter("Solution found!", "Expanded") == 0
