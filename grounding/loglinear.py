@@ -14,7 +14,11 @@ task's features: its text, its lifted form (`agentInRoom blockInRoom`), each ato
 function and each function with one argument (`blockInRoom:blue`). The bias crossed with the task features is the prior over
 tasks; a word crossed with `blockInRoom:blue` is what IBM Model 2 calls t(word | token).
 Because task features are atoms and their parts, a model trained in one dungeon scores
-the tasks of another.
+the tasks of another. A model trained not `factored` has only the text feature: each
+task is a class of its own, as naive Bayes (bayes.py) sees it, so it cannot share what it
+learned about `blockInRoom:green` between tasks; wrong on other commands than a factored
+model, it is a vote of its own in the ensemble (ensemble.py), and it cannot score a task
+that was never a candidate in training (`knows`).
 
 Training maximises the conditional log-likelihood with an L2 penalty to convergence
 (L-BFGS, lbfgs.py), numpy only. A pair whose task is latent (inferred from a
@@ -42,7 +46,11 @@ TAIL = 4           # words at the end of a command tagged as such
 ATOM = re.compile(r"(\w+)\(([^)]*)\)")
 
 
-def task_features(task: str, agent: str = "agent") -> list[str]:
+def task_features(task: str, agent: str = "agent", factored: bool = True) -> list[str]:
+    """The task's features; not `factored`, only its text: each task a class of its own,
+    as naive Bayes sees it (a task never seen in training then scores 0)."""
+    if not factored:
+        return ["T:" + task]
     atoms = ATOM.findall(task)
     out = ["T:" + task, "L:" + " ".join(sorted(f for f, _ in atoms)), f"N:{len(atoms)}"]
     for fn, args in atoms:
@@ -95,12 +103,12 @@ class LogLinear(JsonModelFile):
     """The trained model: feature indices, the weight matrix and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
-                 pairs: int = 0, iterations: int = 0, skips: int = 0):
+                 pairs: int = 0, iterations: int = 0, skips: int = 0, factored: bool = True):
         self.command_index, self.task_index = command_index, task_index
         self.W = weights
         self.speller = speller
         self.pairs, self.iterations = pairs, iterations
-        self.skips = skips
+        self.skips, self.factored = skips, factored
         self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     # ---- interpreting ------------------------------------------------------------------
@@ -110,6 +118,11 @@ class LogLinear(JsonModelFile):
     def known(self, command_words: list[str]) -> list[str]:
         return [w for w in command_words if w in self.vocabulary]
 
+    def knows(self, tasks: list[str]) -> bool:
+        """Whether every task has a feature the model was trained on (a factored model
+        scores any task by its atoms; one that is not, only the tasks it was trained with)."""
+        return self.factored or all("T:" + t in self.task_index for t in tasks)
+
     def _command_vector(self, tokens: list[str]) -> np.ndarray:
         idx = [self.command_index[f] for f in command_features(tokens, self.skips) if f in self.command_index]
         return self.W[idx].sum(axis=0)
@@ -117,7 +130,7 @@ class LogLinear(JsonModelFile):
     def _task_matrix(self, tasks: list[str]) -> np.ndarray:
         T = np.zeros((len(tasks), len(self.task_index)), dtype=np.float64)
         for k, t in enumerate(tasks):
-            for f in task_features(t):
+            for f in task_features(t, factored=self.factored):
                 i = self.task_index.get(f)
                 if i is not None:
                     T[k, i] = 1.0
@@ -131,7 +144,8 @@ class LogLinear(JsonModelFile):
 
     # ---- training ----------------------------------------------------------------------
     @classmethod
-    def train(cls, examples: list, iterations: int = ITERATIONS, l2: float = L2, skips: int = 0) -> LogLinear:
+    def train(cls, examples: list, iterations: int = ITERATIONS, l2: float = L2, skips: int = 0,
+              factored: bool = True) -> LogLinear:
         """`examples`: (command text, candidate task texts, {task text: weight}) -- the weights of
         the pair's task (one task weighted 1 when known, a demonstration's explanations when not);
         every weighted task must be among the candidates."""
@@ -148,7 +162,7 @@ class LogLinear(JsonModelFile):
         task_index: dict = {}
         for _, candidates, _ in prepared:
             for t in candidates:
-                for f in task_features(t):
+                for f in task_features(t, factored=factored):
                     task_index.setdefault(f, len(task_index))
         n, dc, dt = len(prepared), len(command_index), len(task_index)
         rows, cols = [], []
@@ -167,7 +181,7 @@ class LogLinear(JsonModelFile):
         for candidates, members in groups.items():
             T = np.zeros((len(candidates), dt))
             for j, t in enumerate(candidates):
-                for f in task_features(t):
+                for f in task_features(t, factored=factored):
                     T[j, task_index[f]] = 1.0
             pos = {t: j for j, t in enumerate(candidates)}
             prior = np.zeros((len(members), len(candidates)))
@@ -194,11 +208,13 @@ class LogLinear(JsonModelFile):
             grad = by_col.sum(G) / n + l2 * W
             return loss / n + 0.5 * l2 * float((W * W).sum()), grad.ravel()
         x, used = minimise(value_and_gradient, np.zeros(dc * dt), iterations=iterations)
-        return cls(command_index, task_index, x.reshape(dc, dt), speller, pairs=n, iterations=used, skips=skips)
+        return cls(command_index, task_index, x.reshape(dc, dt), speller, pairs=n, iterations=used, skips=skips,
+                   factored=factored)
 
     # ---- files -------------------------------------------------------------------------
     def to_json(self) -> dict:
         return {"format": FORMAT, "pairs": self.pairs, "iterations": self.iterations, "skips": self.skips,
+                "factored": self.factored,
                 "command_features": sorted(self.command_index, key=self.command_index.get),
                 "task_features": sorted(self.task_index, key=self.task_index.get),
                 "weights": [[round(float(x), 4) for x in row] for row in self.W],
@@ -213,10 +229,16 @@ class LogLinear(JsonModelFile):
             counts = {str(w): int(c) for w, c in data["word_counts"].items()}
             return cls({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, W, Speller(counts),
                        pairs=int(data.get("pairs", 0)), iterations=int(data.get("iterations", 0)),
-                       skips=int(data.get("skips", 0)))
+                       skips=int(data.get("skips", 0)),
+                       factored=_flag(data.get("factored", True)))
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed grounding model: {exc}", path) from None
 
+
+def _flag(value) -> bool:
+    if not isinstance(value, bool):
+        raise ValueError("\"factored\" must be true or false")
+    return value
 
 
 __all__ = ["LogLinear", "words", "task_features", "command_features"]

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import random
 
+import numpy as np
 import pytest
 
 from bcc.cli import main
@@ -182,15 +183,22 @@ def test_ensemble_votes_and_round_trips(tmp_path):
           ("push the chair into the blue room", tasks, {tasks[1]: 1.0})] * 3
     model = Ensemble.train(ex)
     from bcc.grounding.bayes import NaiveBayes
-    assert [getattr(m, "skips", None) for m in model.members] == [0, 4, None]
-    assert isinstance(model.members[2], NaiveBayes) and list(model.weights) == [1.0, 1.0, 0.2]
+    assert [getattr(m, "skips", None) for m in model.members] == [0, 4, 0, None]
+    assert [getattr(m, "factored", None) for m in model.members] == [True, True, False, None]
+    assert isinstance(model.members[3], NaiveBayes) and list(model.weights) == [1.0, 1.0, 1.0, 0.2]
     alone = [m.log_posterior("chair into green", tasks) for m in model.members]
     both = model.log_posterior("chair into green", tasks)
     # the weighted mean of the members' log-probabilities, renormalised (two tasks: the
     # first task's log-odds is the weighted mean of the members' log-odds)
     odds = [a[0] - a[1] for a in alone]
     assert both[0] > both[1]
-    assert abs((both[0] - both[1]) - (odds[0] + odds[1] + 0.2 * odds[2]) / 2.2) < 1e-9
+    assert abs((both[0] - both[1]) - (odds[0] + odds[1] + odds[2] + 0.2 * odds[3]) / 3.2) < 1e-9
+    # a task the whole-task member never saw: it abstains, the others vote
+    other = tasks + ["blockInRoom(chair, red)"]
+    assert not model.members[2].knows(other) and model.members[0].knows(other)
+    alone = [m.log_posterior("chair into green", other) for m in model.members]
+    mean = (np.array(alone[0]) + np.array(alone[1]) + 0.2 * np.array(alone[3])) / 2.2
+    assert np.allclose(model.log_posterior("chair into green", other), mean - np.logaddexp.reduce(mean))
     model.save(tmp_path / "e.json")
     again = models.load(tmp_path / "e.json")
     assert isinstance(again, Ensemble) and abs(again.log_posterior("chair into green", tasks)[0] - both[0]) < 1e-3
@@ -201,11 +209,38 @@ def test_ensemble_votes_and_round_trips(tmp_path):
     (tmp_path / "w.json").write_text(json.dumps(data | {"weights": [1, -1, 0]}))
     with pytest.raises(BccError, match="weights"):
         models.load(tmp_path / "w.json")
+    bad = json.loads(json.dumps(data))
+    bad["members"][2]["factored"] = "no"
+    (tmp_path / "f.json").write_text(json.dumps(bad))
+    with pytest.raises(BccError, match="factored"):
+        models.load(tmp_path / "f.json")
     # a file from before the weights (and naive Bayes): equal votes of its members
     old = data | {"members": data["members"][:2]}
     del old["weights"]
     (tmp_path / "old.json").write_text(json.dumps(old))
     assert list(models.load(tmp_path / "old.json").weights) == [1.0, 1.0]
+
+
+def test_whole_task_log_linear_model():
+    """Not factored: one feature per task (its text), so nothing learned about one task's
+    atoms carries over to another; the factored model's features are unchanged."""
+    from bcc.grounding.loglinear import LogLinear, task_features
+    task = "agentInRoom(agent, green) and blockInRoom(chair, blue)"
+    assert task_features(task, factored=False) == ["T:" + task]
+    assert "FA:blockInRoom:blue" in task_features(task) and task_features(task)[0] == "T:" + task
+    tasks = ["agentInRoom(agent, red)", "agentInRoom(agent, green)", "blockInRoom(chair, green)"]
+    ex = [("go to red", tasks, {tasks[0]: 1.0}), ("go to green", tasks, {tasks[1]: 1.0})] * 3
+    model = LogLinear.train(ex, factored=False)
+    assert sorted(model.task_index) == sorted("T:" + t for t in tasks)
+    lp = model.log_posterior("go to green", tasks)
+    assert max(range(3), key=lp.__getitem__) == 1
+    assert model.knows(tasks) and not model.knows(tasks + ["agentInRoom(agent, blue)"])
+    again = LogLinear.from_json(json.loads(json.dumps(model.to_json())))
+    assert again.factored is False and np.allclose(again.log_posterior("go to green", tasks), lp, atol=1e-3)
+    # a file from before the option: factored
+    old = model.to_json()
+    del old["factored"]
+    assert LogLinear.from_json(old).factored is True
 
 
 def test_naive_bayes_counts_and_unseen_tasks(tmp_path):
