@@ -24,6 +24,9 @@ from ..extras import install_hint
 from ..solvers.options import Option, declare
 
 DEFAULT_SEARCH = "astar(lmcut())"
+# Fast Downward's LM-cut does not take axioms (PDDL's derived predicates); its blind A* does,
+# and stays optimal: the default search falls back to it on such a task.
+AXIOMS_SEARCH = "astar(blind())"
 # The driver's exit codes for "ran out of time or memory": translate (20, 21), search
 # (22-24), and a component killed by the CPU-time limit (SIGXCPU; the driver exits with
 # its negative return code, 256 - 24 = 232).
@@ -62,6 +65,7 @@ class FdRun:
     message: str
     expanded: int = 0   # Fast Downward's own counters (its last report), 0 where it printed none
     generated: int = 0
+    search: str = DEFAULT_SEARCH   # the configuration that ran
 
 
 def _counter(out: str, what: str) -> int:
@@ -72,8 +76,18 @@ def _counter(out: str, what: str) -> int:
 
 def run(domain_file: str, problem_file: str, search: str | None = None, time_limit: float | None = None,
         memory_mb: float | None = None, full_names: bool = False) -> FdRun:
-    """Run Fast Downward (translate + search) on two PDDL files."""
+    """Run Fast Downward (translate + search) on two PDDL files; the default search, on a
+    task with axioms it does not take, again with AXIOMS_SEARCH."""
     search = search or os.environ.get("BCC_FD_SEARCH") or DEFAULT_SEARCH
+    fd = _run(domain_file, problem_file, search, time_limit, memory_mb, full_names)
+    if fd.status == "error" and search == DEFAULT_SEARCH and "support axioms" in fd.message:
+        left = None if time_limit is None else max(1.0, time_limit - fd.seconds)
+        fd = _run(domain_file, problem_file, AXIOMS_SEARCH, left, memory_mb, full_names)
+    return fd
+
+
+def _run(domain_file: str, problem_file: str, search: str, time_limit: float | None, memory_mb: float | None,
+         full_names: bool) -> FdRun:
     with tempfile.TemporaryDirectory(prefix="bcc-fd-") as tmp:
         plan_file = os.path.join(tmp, "plan")
         cmd = [sys.executable, str(driver()), "--plan-file", plan_file]
@@ -85,7 +99,8 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
         start = time.perf_counter()
         proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True)
         seconds = time.perf_counter() - start
-        counts = {"expanded": _counter(proc.stdout, "Expanded"), "generated": _counter(proc.stdout, "Generated")}
+        counts = {"expanded": _counter(proc.stdout, "Expanded"), "generated": _counter(proc.stdout, "Generated"),
+                  "search": search}
         if proc.returncode == 0 and os.path.exists(plan_file):
             plan, cost = _read_plan(plan_file, full_names)
             return FdRun(True, plan, cost, seconds, "solved", "", **counts)
@@ -97,7 +112,7 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
         said = [line.strip() for line in (proc.stderr.strip() or proc.stdout.strip()).splitlines()]
         tail = [line for line in said if line.strip("^~ ")][-3:]   # a caret line says nothing here
         return FdRun(False, [], None, seconds, "error",
-                     f"Fast Downward failed (exit {proc.returncode}): {' | '.join(tail)}")
+                     f"Fast Downward failed (exit {proc.returncode}): {' | '.join(tail)}", **counts)
 
 
 def _time_left(budget, start: float) -> float | None:
@@ -129,8 +144,7 @@ def _solve_files(model, budget, files, search, start):
     cost = sum(costs[a] for a in fd.plan) if known else fd.cost
     return Result(solver="fd", solved=True, status="solved", plan=fd.plan, cost=cost, seconds=seconds,
                   expanded=fd.expanded, generated=fd.generated,
-                  message="Fast Downward on the PDDL files, search "
-                          f"{search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")
+                  message=f"Fast Downward on the PDDL files, search {fd.search}")
 
 
 def _read_plan(path: str, full_names: bool = False):
@@ -215,4 +229,4 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
     cost = sum(model.action_costs[model.action_index(a)] for a in plan)
     return Result(solver="fd", solved=True, status="solved", plan=plan, cost=cost, seconds=seconds,
                   expanded=fd.expanded, generated=fd.generated,
-                  message=f"Fast Downward, search {search or os.environ.get('BCC_FD_SEARCH') or DEFAULT_SEARCH}")
+                  message=f"Fast Downward, search {fd.search}")

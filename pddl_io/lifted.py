@@ -5,7 +5,10 @@ its position, so grounding (ground.py) never meets bad input. What is read: STRI
 `:typing` (`either` included), constants, `=`, negative preconditions, `:action-costs`
 (`(increase (total-cost) N)` with N a number or a static function of the problem's
 `:init`), and ADL: `or`, `imply`, `exists`, `forall` in conditions, `when` and `forall`
-in effects. Anything else stops at its position with "... is not supported".
+in effects, and derived predicates (`:derived`) that do not depend on themselves: each
+use of one is replaced by its definition (the `or` of its rules, their quantified
+variables renamed apart), so grounding and search never meet them. Anything else stops
+at its position with "... is not supported" (a recursive derived predicate too).
 
 Formulas are tuples: ("atom", pred, args), ("=", a, b), ("not", f), ("and", fs),
 ("or", fs), ("exists", params, f), ("forall", params, f), ("true",), ("false",). A term
@@ -13,7 +16,8 @@ is a variable "?x" or an object name; `params` is a tuple of (variable, types).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import itertools
+from dataclasses import dataclass, field, replace
 
 from ..errors import BccError
 from .read import SList, read_sexpr
@@ -63,6 +67,7 @@ class Domain:
     actions: list
     uses_costs: bool = False
     loose_names: dict = field(default_factory=dict)  # names actions use without declaring them: name -> token
+    derived: dict = field(default_factory=dict)      # derived predicate -> [(params, formula), ...] (its rules)
 
 
 @dataclass
@@ -176,9 +181,9 @@ def read_domain(path: str) -> Domain:
         head = sec[0] if sec else None
         if head is None or isinstance(head, SList):
             r.fail(sec, "expected a domain section such as (:predicates ...)")
-        if head in (":action",):
+        if head in (":action", ":derived"):
             continue
-        if head in (":durative-action", ":derived", ":process", ":event", ":constraints"):
+        if head in (":durative-action", ":process", ":event", ":constraints"):
             raise unsupported(head, head, path)
         if head not in (":requirements", ":types", ":constants", ":predicates", ":functions"):
             r.fail(head, f"unknown domain section {str(head)!r}")
@@ -208,6 +213,11 @@ def read_domain(path: str) -> Domain:
         dom.predicates[name] = tuple(t for _, t in r.typed_list(p[1:], "variable", dom.parents))
     if ":functions" in sections:
         _functions(r, sections[":functions"], dom)
+    where = {}
+    for sec in d[2:]:
+        if sec and sec[0] == ":derived":
+            name = _derived(r, sec, dom)
+            where.setdefault(name, sec)
     for sec in d[2:]:
         if sec and sec[0] == ":action":
             dom.actions.append(_action(r, sec, dom))
@@ -216,7 +226,100 @@ def read_domain(path: str) -> Domain:
         if a.name in seen:
             raise BccError(f"action {a.name!r} is declared twice", path, *a.where)
         seen.add(a.name)
+    if dom.derived:
+        _check_derived(dom, where, path)
+        fresh = itertools.count()
+        for a in dom.actions:
+            a.pre = inline_derived(a.pre, dom, fresh)
+            a.effects = [replace(e, cond=inline_derived(e.cond, dom, fresh)) for e in a.effects]
     return dom
+
+
+def _derived(r: Reader, sec: SList, dom: Domain) -> str:
+    """One rule `(:derived (P ?x - t ...) condition)`: P holds where the condition does."""
+    if len(sec) != 3:
+        r.fail(sec, "expected (:derived (predicate ?x ...) condition)")
+    head = r.expect_list(sec[1], "the derived predicate")
+    name = r.name(head[0] if head else head, "a predicate name")
+    if name not in dom.predicates:
+        r.fail(head, f"{name!r} is not a predicate of the domain (declare it in :predicates)")
+    params = tuple((str(v), t) for v, t in r.typed_list(head[1:], "variable", dom.parents))
+    if len(params) != len(dom.predicates[name]):
+        r.fail(head, f"{name} takes {len(dom.predicates[name])} arguments, found {len(params)}")
+    body = Formulas(r, dom, None).formula(sec[2], dict(params))
+    dom.derived.setdefault(name, []).append((params, body))
+    return name
+
+
+def _check_derived(dom: Domain, where: dict, path: str) -> None:
+    """No action may change a derived predicate, and none may depend on itself."""
+    for a in dom.actions:
+        for e in a.effects:
+            if e.pred in dom.derived:
+                raise BccError(f"action {a.name!r} changes {e.pred!r}, a derived predicate", path, *a.where)
+    uses = {name: {p for _, body in rules for p in _predicates_in(body) if p in dom.derived}
+            for name, rules in dom.derived.items()}
+    for name in uses:
+        todo, seen = list(uses[name]), set()
+        while todo:
+            p = todo.pop()
+            if p == name:
+                raise unsupported(where[name], f"a recursive derived predicate ({name!r} depends on itself)", path)
+            if p not in seen:
+                seen.add(p)
+                todo.extend(uses[p])
+
+
+def _predicates_in(f) -> set:
+    kind = f[0]
+    if kind == "atom":
+        return {f[1]}
+    if kind in ("and", "or"):
+        return set().union(*(_predicates_in(g) for g in f[1]))
+    if kind == "not":
+        return _predicates_in(f[1])
+    if kind in ("exists", "forall"):
+        return _predicates_in(f[2])
+    return set()
+
+
+def inline_derived(f, dom: Domain, fresh):
+    """`f` with each atom of a derived predicate replaced by the `or` of its rules'
+    conditions, the rule's parameters bound to the atom's terms (definitions do not
+    depend on themselves: _check_derived)."""
+    kind = f[0]
+    if kind == "atom" and f[1] in dom.derived:
+        parts = tuple(inline_derived(_bind(body, dict(zip((v for v, _ in params), f[2])), fresh), dom, fresh)
+                      for params, body in dom.derived[f[1]])
+        return parts[0] if len(parts) == 1 else ("or", parts)
+    if kind in ("and", "or"):
+        return (kind, tuple(inline_derived(g, dom, fresh) for g in f[1]))
+    if kind == "not":
+        return ("not", inline_derived(f[1], dom, fresh))
+    if kind in ("exists", "forall"):
+        return (kind, f[1], inline_derived(f[2], dom, fresh))
+    return f
+
+
+def _bind(f, env: dict, fresh):
+    """A rule's condition with its parameters replaced by terms (`env`) and its quantified
+    variables renamed apart (`?x~7`), so that none captures a variable of the place it
+    is used in."""
+    kind = f[0]
+    if kind == "atom":
+        return ("atom", f[1], tuple(env.get(t, t) for t in f[2]))
+    if kind == "=":
+        return ("=", env.get(f[1], f[1]), env.get(f[2], f[2]))
+    if kind in ("and", "or"):
+        return (kind, tuple(_bind(g, env, fresh) for g in f[1]))
+    if kind == "not":
+        return ("not", _bind(f[1], env, fresh))
+    if kind in ("exists", "forall"):
+        renamed = tuple((f"{v}~{next(fresh)}", t) for v, t in f[1])
+        inner = dict(env)
+        inner.update((v, new) for (v, _), (new, _) in zip(f[1], renamed))
+        return (kind, renamed, _bind(f[2], inner, fresh))
+    return f
 
 
 def _check_acyclic(parents: dict, node, path: str):
@@ -485,13 +588,15 @@ def read_problem(path: str, dom: Domain) -> Problem:
         if fact and fact[0] == "not":
             continue  # closed world: false anyway
         a = f.atom(fact, {})
+        if a[0] == "atom" and a[1] in dom.derived:
+            r.fail(fact, f"{a[1]!r} is a derived predicate: it holds where its rules say, never by :init")
         prob.init.add((a[1], a[2]))  # types are not checked here: Fast Downward does not either
     if ":goal" not in sections:
         r.fail(d, "the problem has no :goal")
     g = sections[":goal"]
     if len(g) != 2:
         r.fail(g, ":goal takes one condition")
-    prob.goal = f.formula(g[1], {})
+    prob.goal = inline_derived(f.formula(g[1], {}), dom, itertools.count())
     if ":metric" in sections:
         m = sections[":metric"]
         if len(m) == 3 and m[1] == "minimize" and isinstance(m[2], SList) and list(m[2]) == ["total-cost"]:

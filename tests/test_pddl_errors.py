@@ -47,8 +47,16 @@ CASES = [
     # (what, replace in domain, replace in problem, file, line, col, message)
     ("a durative action", ("(:action carry", "(:durative-action carry"), None, "d", 5, 4,
      ":durative-action is not supported"),
-    ("derived predicates", ("  (:action carry", "  (:derived (open) (open))\n  (:action carry"), None, "d", 5, 4,
-     ":derived is not supported"),
+    ("a recursive derived predicate", ("  (:action carry", "  (:derived (open) (open))\n  (:action carry"), None,
+     "d", 5, 3, "a recursive derived predicate ('open' depends on itself) is not supported"),
+    ("a derived predicate an action changes",
+     ("  (:action carry", "  (:derived (at ?b - box ?p - place) (open))\n  (:action carry"), None,
+     "d", 6, 3, "action 'carry' changes 'at', a derived predicate"),
+    ("a derived predicate in :init", ("  (:action carry", "  (:derived (open) (exists (?b - box) (at ?b y)))\n"
+                                      "  (:action carry"), None, "p", 4, 20,
+     "'open' is a derived predicate: it holds where its rules say, never by :init"),
+    ("a derived predicate not declared", ("  (:action carry", "  (:derived (shut) (open))\n  (:action carry"), None,
+     "d", 5, 13, "'shut' is not a predicate of the domain (declare it in :predicates)"),
     ("a numeric effect", ("(at ?b ?to))))", "(at ?b ?to) (decrease (fuel) 1))))"), None, "d", 8, 51,
      "the numeric effect decrease is not supported"),
     ("a numeric comparison", ("(open))\n    :effect", "(< 1 2))\n    :effect"), None, "d", 7, 39,

@@ -102,7 +102,7 @@ def test_fd_solver_returns_a_bcc_result():
 
 
 @pytest.mark.parametrize("domain,problem", [("gripper-domain", "gripper-3"), ("blocksworld-domain", "blocksworld-4"),
-                                            ("logistics-domain", "logistics-2")])
+                                            ("logistics-domain", "logistics-2"), ("lights-domain", "lights-2")])
 def test_imported_problems_cost_equals_fd(domain, problem):
     from bcc.pddl_io.importer import import_pddl
     d, p = str(HERE / f"{domain}.pddl"), str(HERE / f"{problem}.pddl")
@@ -126,3 +126,15 @@ def test_fast_downwards_counters_are_its_last_report():
            "[t=0.03s, 9 KB] Expanded 12 state(s).\n[t=0.03s, 9 KB] Generated 30 state(s).\n")
     assert fast_downward._counter(out, "Expanded") == 12 and fast_downward._counter(out, "Generated") == 30
     assert fast_downward._counter("Solution found!", "Expanded") == 0
+
+
+def test_a_task_with_axioms_falls_back_from_lmcut_to_blind_search():
+    # Fast Downward's LM-cut refuses derived predicates; its default search then reruns blind
+    fd = fast_downward.run(str(HERE / "lights-domain.pddl"), str(HERE / "lights-2.pddl"), time_limit=60)
+    assert fd.solved and fd.cost == 5 and fd.search == fast_downward.AXIOMS_SEARCH
+    asked = fast_downward.run(str(HERE / "lights-domain.pddl"), str(HERE / "lights-2.pddl"),
+                              search="astar(lmcut())", time_limit=60)
+    assert asked.search == fast_downward.AXIOMS_SEARCH   # the default, named: the same fallback
+    other = fast_downward.run(str(HERE / "lights-domain.pddl"), str(HERE / "lights-2.pddl"),
+                              search="astar(hmax())", time_limit=60)
+    assert other.solved and other.cost == 5 and other.search == "astar(hmax())"   # another search runs as asked

@@ -20,8 +20,12 @@ from bcc.solvers import Budget, get_solver
 HERE = Path(__file__).parent / "pddl"
 HAND_COSTS = {"gripper-3": ("gripper-domain", 9), "blocksworld-4": ("blocksworld-domain", 8),
               "logistics-2": ("logistics-domain", 9), "road-1": ("road-domain", 2),
-              "sokoban-corridor": ("sokoban-domain", 2), "briefcase-1": ("briefcase-domain", 6)}
-UNIT = {"gripper-3", "blocksworld-4", "logistics-2", "briefcase-1"}
+              "sokoban-corridor": ("sokoban-domain", 2), "briefcase-1": ("briefcase-domain", 6),
+              # lights-1: r2 is entered only when lit (l2 on), l2 is switched from r1, r1 is
+              # entered only when lit (l1 on), l1 is switched from home: 4 steps. lights-2 also
+              # wants r1 dark again: one switch-off of l1, from r2, while l2 is on: 5.
+              "lights-1": ("lights-domain", 4), "lights-2": ("lights-domain", 5)}
+UNIT = {"gripper-3", "blocksworld-4", "logistics-2", "briefcase-1", "lights-1", "lights-2"}
 
 
 def load(problem):
@@ -140,6 +144,24 @@ def test_either_types_constants_equality_and_negative_preconditions():
     model = load("briefcase-1")   # `either`, a constant, (not (= ?from ?to)), (not (in ?x)), forall/when
     assert "(move home home)" not in model.action_names
     assert "(move home office)" in model.action_names
+
+
+def test_derived_predicates_are_replaced_by_their_rules():
+    from bcc.pddl_io.lifted import read_domain
+    dom = read_domain(str(HERE / "lights-domain.pddl"))
+    switch_off = next(a for a in dom.actions if a.name == "switch-off")
+    # (another-on ?y): its rule's own ?y is renamed apart, so it still compares two lamps
+    inlined = [f for f in switch_off.pre[1] if f[0] == "exists"]
+    assert len(inlined) == 1
+    kind, ((bound, _),), body = inlined[0]
+    assert bound.startswith("?y~") and body == ("and", (("atom", "on", (bound,)), ("not", ("=", "?y", bound))))
+    # (safe ?b) has two rules: their `or`
+    move = next(a for a in dom.actions if a.name == "move")
+    assert [f[0] for f in move.pre[1]] == ["atom", "atom", "or"]
+    # (dark ?r) is (not (lit ?r)), itself a rule: switching a lit room's lamp does not apply
+    model = load("lights-1")
+    s = model.apply(model.action_index("(switch-on home r1 l1)"), model.initial)
+    assert s is not None and model.apply(model.action_index("(switch-on home r1 l1)"), s) is None
 
 
 def test_conditional_effects_read_the_state_before_the_action():

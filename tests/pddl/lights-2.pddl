@@ -1,0 +1,5 @@
+(define (problem lights-2) (:domain lights)
+  (:objects home r1 r2 - room l1 l2 - lamp)
+  (:init (at home) (home home) (adj home r1) (adj r1 home) (adj r1 r2) (adj r2 r1)
+         (in l1 r1) (in l2 r2))
+  (:goal (and (at r2) (dark r1))))
