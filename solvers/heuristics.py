@@ -110,10 +110,14 @@ def counting(model: Model, time_limit: float | None = None):
     base, variables, parts, part, get, shift = db.base, db.variables.get, db.parts.get, db.part, db.table.get, db.shift
 
     project = db.project if db.projected else None
+    part_of: dict = {}   # a state's changed cells (its tail) -> its cell part's id: states share a few tails
 
     def h(s):
         v = variables(project(s) if project else s[:base])
-        r = parts(part(cell_entries(s[base:])))
+        tail = s[base:]
+        r = part_of.get(tail, -1)
+        if r == -1:
+            r = part_of[tail] = parts(part(cell_entries(tail)))
         d = None if v is None or r is None else get(v << shift | r)
         return 0 if d is None else d   # None: never met by the abstraction (cannot happen); 0 stays admissible
     return h
