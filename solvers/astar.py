@@ -29,7 +29,7 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result
-from .heuristics import HEURISTICS, position_blind
+from .heuristics import ADMISSIBLE, HEURISTICS, position_blind
 from .layers import layered
 from .options import Option, declare, heuristic_option
 
@@ -90,6 +90,9 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
         return result(solved=False, status="no_solution",
                       message="no plan exists: the goal cannot hold at any reachable position")
     keys, bins = _open_list([start], nodes, h, weight, packed)
+    # An admissible heuristic is 0 on every goal: a state it rates above 0 skips the goal test
+    # (the auto switch moves between admissible ones)
+    goal_aware = used in ADMISSIBLE
     get, push, pop, inf, ceil = nodes.get, heapq.heappush, heapq.heappop, math.inf, math.ceil
     expanded = generated = 0
     max_states = budget.max_states
@@ -106,7 +109,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
             g = key[2]
         if nodes[state][0] < g:
             continue
-        if is_goal(state):
+        if (not goal_aware or not (key & LOW if packed else key[1])) and is_goal(state):
             plan, cost = _plan(model, nodes, state)
             return result(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded, generated=generated)
         expanded += 1

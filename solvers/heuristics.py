@@ -136,6 +136,8 @@ def _relaxed(kind: str):
     return make
 
 
+# Never above the true cost, so 0 on every goal state: a state they rate above 0 is no goal
+ADMISSIBLE = frozenset({"blind", "manhattan", "pdb", "hmax", "lmcut", "counting"})
 HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind,
               "hmax": _relaxed("hmax"), "hadd": _relaxed("hadd"), "hff": _relaxed("hff"), "lmcut": _relaxed("lmcut"),
               "counting": counting}
