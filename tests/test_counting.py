@@ -252,14 +252,15 @@ def test_cli_solves_manipulation_with_counting(tmp_path):
 
 
 def test_cli_time_limit_bounds_the_build(tmp_path):
-    """6 stones: the abstraction takes several seconds of CPU to build (1.3 M states
-    before it projects the selected slot away); --time-limit 0.5 stops the command (exit
-    1, a budget result) and leaves no database in the cache."""
+    """8 stones: the abstraction takes about 5 s of CPU to build (here; its first try
+    stops at 500,000 states, then the selected slot is projected away), 10x the limit:
+    --time-limit 0.5 stops the command (exit 1, a budget result) and leaves no database
+    in the cache."""
     import json
     import os
     import subprocess
     import sys
-    path = _write(tmp_path, "rooms6", generate_manipulation(6))
+    path = _write(tmp_path, "rooms8", generate_manipulation(8))
     cache = tmp_path / "cache"
     out = subprocess.run([sys.executable, "-m", "bcc", "solve", path, "--json", "--time-limit", "0.5"],
                          capture_output=True, text=True, env={**os.environ, "BCC_CACHE_DIR": str(cache)})
