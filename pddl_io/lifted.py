@@ -230,8 +230,10 @@ def read_domain(path: str) -> Domain:
         _check_derived(dom, where, path)
         fresh = itertools.count()
         for a in dom.actions:
-            a.pre = inline_derived(a.pre, dom, fresh)
-            a.effects = [replace(e, cond=inline_derived(e.cond, dom, fresh)) for e in a.effects]
+            scope = dict(a.params)
+            a.pre = inline_derived(a.pre, dom, fresh, scope, dom.constants)
+            a.effects = [replace(e, cond=inline_derived(e.cond, dom, fresh, {**scope, **dict(e.params)},
+                                                        dom.constants)) for e in a.effects]
     return dom
 
 
@@ -283,22 +285,38 @@ def _predicates_in(f) -> set:
     return set()
 
 
-def inline_derived(f, dom: Domain, fresh):
+def inline_derived(f, dom: Domain, fresh, scope: dict, objects: dict):
     """`f` with each atom of a derived predicate replaced by the `or` of its rules'
     conditions, the rule's parameters bound to the atom's terms (definitions do not
-    depend on themselves: _check_derived)."""
+    depend on themselves: _check_derived). `scope` gives the variables' types, `objects`
+    the objects': a term whose type the rule's parameter may not include gets a test
+    that it does (`exists ?t - T (= ?t term)`), as the typed axiom would."""
     kind = f[0]
     if kind == "atom" and f[1] in dom.derived:
-        parts = tuple(inline_derived(_bind(body, dict(zip((v for v, _ in params), f[2])), fresh), dom, fresh)
-                      for params, body in dom.derived[f[1]])
-        return parts[0] if len(parts) == 1 else ("or", parts)
+        parts = []
+        for params, body in dom.derived[f[1]]:
+            tests = [_type_test(term, want, dom, fresh, scope, objects) for (_, want), term in zip(params, f[2])]
+            bound = _bind(body, dict(zip((v for v, _ in params), f[2])), fresh)
+            tests = [t for t in tests if t is not None]
+            parts.append(inline_derived(("and", (*tests, bound)) if tests else bound, dom, fresh, scope, objects))
+        return parts[0] if len(parts) == 1 else ("or", tuple(parts))
     if kind in ("and", "or"):
-        return (kind, tuple(inline_derived(g, dom, fresh) for g in f[1]))
+        return (kind, tuple(inline_derived(g, dom, fresh, scope, objects) for g in f[1]))
     if kind == "not":
-        return ("not", inline_derived(f[1], dom, fresh))
+        return ("not", inline_derived(f[1], dom, fresh, scope, objects))
     if kind in ("exists", "forall"):
-        return (kind, f[1], inline_derived(f[2], dom, fresh))
+        return (kind, f[1], inline_derived(f[2], dom, fresh, {**scope, **dict(f[1])}, objects))
     return f
+
+
+def _type_test(term: str, want: frozenset, dom: Domain, fresh, scope: dict, objects: dict):
+    """None where `term` is of a type in `want` whatever it stands for; else the test."""
+    have = scope.get(term) if term.startswith("?") else \
+        (frozenset({objects[term]}) if term in objects else None)
+    if have is not None and all(any(is_a(t, w, dom.parents) for w in want) for t in have):
+        return None
+    v = f"?type~{next(fresh)}"
+    return ("exists", ((v, want),), ("=", v, term))
 
 
 def _bind(f, env: dict, fresh):
@@ -596,7 +614,7 @@ def read_problem(path: str, dom: Domain) -> Problem:
     g = sections[":goal"]
     if len(g) != 2:
         r.fail(g, ":goal takes one condition")
-    prob.goal = inline_derived(f.formula(g[1], {}), dom, itertools.count())
+    prob.goal = inline_derived(f.formula(g[1], {}), dom, itertools.count(), {}, prob.objects)
     if ":metric" in sections:
         m = sections[":metric"]
         if len(m) == 3 and m[1] == "minimize" and isinstance(m[2], SList) and list(m[2]) == ["total-cost"]:

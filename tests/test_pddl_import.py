@@ -505,3 +505,26 @@ def test_every_solver_and_choice_on_an_imported_task_solves_or_says_why(solver, 
         for name in result.plan:
             s = model.step(s, model.action_index(name))[0]
         assert model.is_goal(s)
+
+
+TYPED_DERIVED = """(define (domain typed-derived)
+  (:requirements :typing :derived-predicates)
+  (:types a b - object)
+  (:predicates (p ?x - object) (d ?x - a) (done))
+  (:derived (d ?x - a) (p ?x))
+  (:action go :parameters (?y - object) :precondition (d ?y) :effect (done)))
+"""
+
+
+@pytest.mark.parametrize("init,cost", [("(p o2)", None), ("(p o1) (p o2)", 1)])
+def test_a_derived_predicate_holds_only_for_its_parameters_types(tmp_path, init, cost):
+    # (d ?x - a) is (p ?x) for objects of type a only: o2 is a b, so (p o2) alone makes no
+    # (d o2) and `go` never applies (Fast Downward's typed axiom agrees); (p o1) does
+    (tmp_path / "d.pddl").write_text(TYPED_DERIVED)
+    (tmp_path / "p.pddl").write_text(f"(define (problem t) (:domain typed-derived) (:objects o1 - a o2 - b)"
+                                     f" (:init {init}) (:goal (done)))")
+    model = import_pddl(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl"))
+    result = get_solver("bfs")(model, Budget(time_limit=60))
+    assert result.solved == (cost is not None) and (cost is None or result.cost == cost)
+    if cost:
+        assert result.plan == ["(go o1)"]
