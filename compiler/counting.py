@@ -480,7 +480,8 @@ class _Builder:
                     if nkey != key:
                         src.append(key)
                         dst.append(nkey)
-                        cost.append(c)
+                        if not uniform:
+                            cost.append(c)
             vids, rids = frontier >> SHIFT, frontier & mask
             # the goal test, once per (the goal's variables' values, cell part)
             if len(gclass) != len(goal_class):
@@ -493,9 +494,7 @@ class _Builder:
             met_goal = np.array([goal_memo[g] for g in distinct.tolist()], dtype=bool)
             goals.append(frontier[met_goal[np.searchsorted(distinct, gkeys)]])
             # the actions that touch no cell, for the whole layer
-            lo, hi = fptr[vids], fptr[vids + 1]
-            total = hi - lo
-            idx = np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum())
+            idx, total = _ranges(fptr[vids], fptr[vids + 1])
             layer_dst = np.concatenate((fdst[idx] | np.repeat(rids, total), np.frombuffer(dst, dtype=np.int64)))
             edge_src.append(np.concatenate((np.repeat(frontier, total), np.frombuffer(src, dtype=np.int64))))
             edge_dst.append(layer_dst)
@@ -740,8 +739,7 @@ def _backward(n: int, src, dst, cost, goals) -> list:
             lo, hi = starts[frontier], starts[frontier + 1]
             if not len(lo):
                 break
-            total = hi - lo
-            idx = np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum())
+            idx, _ = _ranges(lo, hi)
             preds = _unique(s[idx])
             preds = preds[dist[preds] == np.inf]
             dist[preds] = level
@@ -762,6 +760,14 @@ def _backward(n: int, src, dst, cost, goals) -> list:
                 out[v] = nd
                 heapq.heappush(heap, (nd, v))
     return out
+
+
+def _ranges(lo, hi):
+    """The indices lo[k] .. hi[k] - 1 of every k, concatenated, and each range's length:
+    the rows of a compressed adjacency table for several nodes at once."""
+    import numpy as np
+    total = hi - lo
+    return np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum()), total
 
 
 def _unique(a):
