@@ -3,6 +3,7 @@ the log-linear model and spelling normalisation. The pairs here are made up for 
 from __future__ import annotations
 
 import json
+import math
 import random
 
 import numpy as np
@@ -183,21 +184,23 @@ def test_ensemble_votes_and_round_trips(tmp_path):
           ("push the chair into the blue room", tasks, {tasks[1]: 1.0})] * 3
     model = Ensemble.train(ex)
     from bcc.grounding.bayes import NaiveBayes
-    assert [getattr(m, "skips", None) for m in model.members] == [0, 4, 0, None]
-    assert [getattr(m, "factored", None) for m in model.members] == [True, True, False, None]
-    assert isinstance(model.members[3], NaiveBayes) and list(model.weights) == [1.0, 1.0, 1.0, 0.2]
+    from bcc.grounding.network import Network
+    assert [getattr(m, "skips", None) for m in model.members] == [0, 4, 0, None, 0]
+    assert [getattr(m, "factored", None) for m in model.members] == [True, True, False, None, True]
+    assert isinstance(model.members[3], NaiveBayes) and isinstance(model.members[4], Network)
+    assert list(model.weights) == [1.0, 1.0, 1.0, 0.2, 1.0]
     alone = [m.log_posterior("chair into green", tasks) for m in model.members]
     both = model.log_posterior("chair into green", tasks)
     # the weighted mean of the members' log-probabilities, renormalised (two tasks: the
     # first task's log-odds is the weighted mean of the members' log-odds)
     odds = [a[0] - a[1] for a in alone]
     assert both[0] > both[1]
-    assert abs((both[0] - both[1]) - (odds[0] + odds[1] + odds[2] + 0.2 * odds[3]) / 3.2) < 1e-9
+    assert abs((both[0] - both[1]) - (odds[0] + odds[1] + odds[2] + 0.2 * odds[3] + odds[4]) / 4.2) < 1e-9
     # a task the whole-task member never saw: it abstains, the others vote
     other = tasks + ["blockInRoom(chair, red)"]
     assert not model.members[2].knows(other) and model.members[0].knows(other)
     alone = [m.log_posterior("chair into green", other) for m in model.members]
-    mean = (np.array(alone[0]) + np.array(alone[1]) + 0.2 * np.array(alone[3])) / 2.2
+    mean = (np.array(alone[0]) + np.array(alone[1]) + 0.2 * np.array(alone[3]) + np.array(alone[4])) / 3.2
     assert np.allclose(model.log_posterior("chair into green", other), mean - np.logaddexp.reduce(mean))
     model.save(tmp_path / "e.json")
     again = models.load(tmp_path / "e.json")
@@ -276,3 +279,50 @@ def test_naive_bayes_counts_and_unseen_tasks(tmp_path):
     (tmp_path / "bad.json").write_text(json.dumps(model.to_json() | {"feature_counts": {tasks[0]: {"99": 1}}}))
     with pytest.raises(BccError, match="malformed"):
         NaiveBayes.load(tmp_path / "bad.json")
+
+
+def test_network_scores_word_combinations_and_round_trips(tmp_path):
+    """The feed-forward network (network.py): it learns a pair of words that only together
+    say the task, scores other dungeons' tasks by their atoms, trains the same model twice
+    from the same pairs, and saves its weights exactly."""
+    from bcc.grounding.network import Network
+    tasks = ["blockInRoom(chair, green)", "blockInRoom(chair, blue)",
+             "agentInRoom(agent, green)", "agentInRoom(agent, blue)"]
+    # "green" alone does not say which atom: "chair" beside it does
+    ex = [("push the chair into green", tasks, {tasks[0]: 1.0}), ("push the chair into blue", tasks, {tasks[1]: 1.0}),
+          ("walk into green", tasks, {tasks[2]: 1.0}), ("walk into blue", tasks, {tasks[3]: 1.0})] * 4
+    model = Network.train(ex, starts=2, epochs=60)
+    for command, want in (("push the chair into green", 0), ("walk into blue", 3), ("the chair into blue", 1)):
+        lp = model.log_posterior(command, tasks)
+        assert max(range(4), key=lp.__getitem__) == want, command
+        assert abs(sum(math.exp(x) for x in lp) - 1) < 1e-9
+    # factored: a task never trained on is scored by its atoms' parts, not ruled out
+    other = tasks + ["blockInRoom(chair, red)"]
+    assert model.knows(other) and all(math.isfinite(x) for x in model.log_posterior("chair into red", other))
+    again = Network.train(ex, starts=2, epochs=60)
+    assert again.log_posterior("walk into green", tasks) == model.log_posterior("walk into green", tasks)
+    model.save(tmp_path / "n.json")
+    loaded = Network.load(tmp_path / "n.json")
+    assert np.allclose(loaded.log_posterior("walk into green", tasks), model.log_posterior("walk into green", tasks),
+                       atol=1e-5)
+    data = json.loads((tmp_path / "n.json").read_text())
+    for broken, message in ((data["starts"][0] | {"W1": "AAAA"}, "numbers"), (data["starts"][0] | {"V": 7}, "base64"),
+                            (data["starts"][0] | {"b1": "@@"}, "base64")):
+        (tmp_path / "bad.json").write_text(json.dumps(data | {"starts": [broken]}))
+        with pytest.raises(BccError, match=message):
+            Network.load(tmp_path / "bad.json")
+    # latent tasks (a demonstration's weighted explanations) train as their mixture
+    soft = Network.train([("walk into green", tasks, {tasks[2]: 3.0, tasks[0]: 1.0})] * 8, starts=1, epochs=30)
+    lp = soft.log_posterior("walk into green", tasks)
+    assert lp[2] > lp[1] and lp[0] > lp[1]
+
+
+def test_network_whole_tasks_abstain_on_unseen_ones():
+    from bcc.grounding.network import Network
+    tasks = ["agentInRoom(agent, red)", "agentInRoom(agent, green)"]
+    model = Network.train([("go to red", tasks, {tasks[0]: 1.0}), ("go to green", tasks, {tasks[1]: 1.0})] * 4,
+                          factored=False, starts=1, epochs=40)
+    assert sorted(model.task_index) == sorted("T:" + t for t in tasks)
+    assert model.knows(tasks) and not model.knows(tasks + ["agentInRoom(agent, blue)"])
+    lp = model.log_posterior("go to green", tasks)
+    assert lp[1] > lp[0]
