@@ -22,7 +22,8 @@ in the log-linear model.
 In 10-fold cross-validation over the cleanup-amt corpus (bench/corpus.py) it was the
 most accurate single model on L1 commands (routes through rooms and doors, where what
 is said last matters with what is said with it); as a vote of the ensemble
-(ensemble.py) it raised L1 without lowering the other levels.
+(ensemble.py) it raised L1 by most of a point and moved L0 and L2 by a fifth of a point
+or less. Eight starts were right more often than five (their mean is steadier).
 """
 from __future__ import annotations
 
@@ -39,7 +40,7 @@ from .text import Speller
 
 FORMAT = "bcc-network/1"
 HIDDEN = 64          # hidden units
-STARTS = 5           # random starts averaged
+STARTS = 8           # random starts averaged
 EPOCHS = 40          # passes over the pairs
 BATCH = 32
 RATE = 3e-3          # Adam's step size
