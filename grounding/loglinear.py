@@ -99,7 +99,54 @@ class _Segments:
         return out
 
 
-class LogLinear(JsonModelFile):
+def task_matrix(tasks: list[str], task_index: dict, factored: bool = True) -> np.ndarray:
+    """Candidates x task features, 1 where a task has a feature (features never trained on are left out)."""
+    T = np.zeros((len(tasks), len(task_index)), dtype=np.float64)
+    for k, t in enumerate(tasks):
+        for f in task_features(t, factored=factored):
+            i = task_index.get(f)
+            if i is not None:
+                T[k, i] = 1.0
+    return T
+
+
+def index_features(examples: list, skips: int = 0, factored: bool = True) -> tuple:
+    """(speller, each example's command features, command feature -> index, task feature ->
+    index) for training examples (command, candidates, target): the speller learns the
+    examples' words; a command feature must occur in MIN_COUNT commands (on 50 examples or
+    more: a feature of a single command says more about that command than about the
+    language); task features are those of every candidate."""
+    speller = Speller.learn(c for c, _, _ in examples)
+    feats = [command_features(speller.normalise(c), skips) for c, _, _ in examples]
+    counts = Counter(f for fs in feats for f in fs)
+    least = MIN_COUNT if len(examples) >= 50 else 1
+    command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= least))}
+    task_index: dict = {}
+    for _, candidates, _ in examples:
+        for t in candidates:
+            for f in task_features(t, factored=factored):
+                task_index.setdefault(f, len(task_index))
+    return speller, feats, command_index, task_index
+
+
+class FeatureModel(JsonModelFile):
+    """What every model over command and task features shares (this one and network.py's):
+    spelling-corrected tokens, the words it knows, and whether it can score given tasks.
+    Subclasses set `speller`, `vocabulary`, `task_index` and `factored`."""
+
+    def tokens(self, command: str) -> list[str]:
+        return self.speller.normalise(command)
+
+    def known(self, command_words: list[str]) -> list[str]:
+        return [w for w in command_words if w in self.vocabulary]
+
+    def knows(self, tasks: list[str]) -> bool:
+        """Whether every task has a feature the model was trained on (a factored model
+        scores any task by its atoms; one that is not, only the tasks it was trained with)."""
+        return self.factored or all("T:" + t in self.task_index for t in tasks)
+
+
+class LogLinear(FeatureModel):
     """The trained model: feature indices, the weight matrix and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
@@ -112,33 +159,13 @@ class LogLinear(JsonModelFile):
         self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     # ---- interpreting ------------------------------------------------------------------
-    def tokens(self, command: str) -> list[str]:
-        return self.speller.normalise(command)
-
-    def known(self, command_words: list[str]) -> list[str]:
-        return [w for w in command_words if w in self.vocabulary]
-
-    def knows(self, tasks: list[str]) -> bool:
-        """Whether every task has a feature the model was trained on (a factored model
-        scores any task by its atoms; one that is not, only the tasks it was trained with)."""
-        return self.factored or all("T:" + t in self.task_index for t in tasks)
-
     def _command_vector(self, tokens: list[str]) -> np.ndarray:
         idx = [self.command_index[f] for f in command_features(tokens, self.skips) if f in self.command_index]
         return self.W[idx].sum(axis=0)
 
-    def _task_matrix(self, tasks: list[str]) -> np.ndarray:
-        T = np.zeros((len(tasks), len(self.task_index)), dtype=np.float64)
-        for k, t in enumerate(tasks):
-            for f in task_features(t, factored=self.factored):
-                i = self.task_index.get(f)
-                if i is not None:
-                    T[k, i] = 1.0
-        return T
-
     def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
         """log P(task | command) for each candidate task text."""
-        s = self._task_matrix(tasks) @ self._command_vector(self.tokens(command))
+        s = task_matrix(tasks, self.task_index, self.factored) @ self._command_vector(self.tokens(command))
         s -= s.max()
         return list(s - math.log(np.exp(s).sum()))
 
@@ -149,21 +176,8 @@ class LogLinear(JsonModelFile):
         """`examples`: (command text, candidate task texts, {task text: weight}) -- the weights of
         the pair's task (one task weighted 1 when known, a demonstration's explanations when not);
         every weighted task must be among the candidates."""
-        speller = Speller.learn(c for c, _, _ in examples)
-        counts = Counter()
-        prepared = []
-        for command, candidates, target in examples:
-            feats = command_features(speller.normalise(command), skips)
-            counts.update(feats)
-            prepared.append((feats, list(candidates), target))
-        # a feature of a single command says more about that command than about the language
-        least = MIN_COUNT if len(prepared) >= 50 else 1
-        command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= least))}
-        task_index: dict = {}
-        for _, candidates, _ in prepared:
-            for t in candidates:
-                for f in task_features(t, factored=factored):
-                    task_index.setdefault(f, len(task_index))
+        speller, feats, command_index, task_index = index_features(examples, skips, factored)
+        prepared = [(fs, list(candidates), target) for fs, (_, candidates, target) in zip(feats, examples)]
         n, dc, dt = len(prepared), len(command_index), len(task_index)
         rows, cols = [], []
         groups: dict = {}          # candidate list -> (example indices, task matrix, target matrix rows)
@@ -179,10 +193,7 @@ class LogLinear(JsonModelFile):
         by_col = _Segments(cols_a, rows_a, dc)      # X^T G: sum of G's rows per feature
         blocks = []
         for candidates, members in groups.items():
-            T = np.zeros((len(candidates), dt))
-            for j, t in enumerate(candidates):
-                for f in task_features(t, factored=factored):
-                    T[j, task_index[f]] = 1.0
+            T = task_matrix(list(candidates), task_index, factored)
             pos = {t: j for j, t in enumerate(candidates)}
             prior = np.zeros((len(members), len(candidates)))
             for r, k in enumerate(members):
@@ -241,4 +252,4 @@ def _flag(value) -> bool:
     return value
 
 
-__all__ = ["LogLinear", "words", "task_features", "command_features"]
+__all__ = ["FeatureModel", "LogLinear", "words", "task_features", "command_features", "task_matrix"]

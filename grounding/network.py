@@ -29,13 +29,12 @@ from __future__ import annotations
 
 import base64
 import math
-from collections import Counter
 
 import numpy as np
 
 from ..errors import BccError
-from .loglinear import MIN_COUNT, command_features, task_features
-from .model_file import JsonModelFile, expect_format
+from .loglinear import FeatureModel, command_features, index_features, task_matrix
+from .model_file import expect_format
 from .text import Speller
 
 FORMAT = "bcc-network/1"
@@ -50,7 +49,7 @@ DROP_INPUT = 0.2     # dropout of the command's features while training
 SEED = 0
 
 
-class Network(JsonModelFile):
+class Network(FeatureModel):
     """The trained network: feature indices, each start's weights, and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, starts: list[tuple], speller: Speller,
@@ -63,24 +62,11 @@ class Network(JsonModelFile):
         self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     # ---- interpreting ------------------------------------------------------------------
-    def tokens(self, command: str) -> list[str]:
-        return self.speller.normalise(command)
-
-    def known(self, command_words: list[str]) -> list[str]:
-        return [w for w in command_words if w in self.vocabulary]
-
-    def knows(self, tasks: list[str]) -> bool:
-        """Whether every task has a feature the network was trained on (see LogLinear.knows)."""
-        return self.factored or all("T:" + t in self.task_index for t in tasks)
-
-    def _task_matrix(self, tasks: list[str]) -> np.ndarray:
-        return _task_matrix(tasks, self.task_index, self.factored)
-
     def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
         """log P(task | command) for each candidate task text: the mean over the starts."""
         idx = [self.command_index[f] for f in command_features(self.tokens(command), self.skips)
                if f in self.command_index]
-        T = self._task_matrix(tasks)
+        T = task_matrix(tasks, self.task_index, self.factored)
         total = np.zeros(len(tasks))
         for W1, b1, V in self.starts:
             h = np.maximum(W1[idx].sum(axis=0) + b1, 0.0)
@@ -96,16 +82,7 @@ class Network(JsonModelFile):
     def train(cls, examples: list, skips: int = 0, factored: bool = True, hidden: int = HIDDEN,
               starts: int = STARTS, epochs: int = EPOCHS, seed: int = SEED) -> Network:
         """`examples` as for LogLinear.train: (command, candidates, {task: weight})."""
-        speller = Speller.learn(c for c, _, _ in examples)
-        feats = [command_features(speller.normalise(c), skips) for c, _, _ in examples]
-        counts = Counter(f for fs in feats for f in fs)
-        least = MIN_COUNT if len(examples) >= 50 else 1
-        command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= least))}
-        task_index: dict = {}
-        for _, candidates, _ in examples:
-            for t in candidates:
-                for f in task_features(t, factored=factored):
-                    task_index.setdefault(f, len(task_index))
+        speller, feats, command_index, task_index = index_features(examples, skips, factored)
         active = [np.array([command_index[f] for f in fs if f in command_index], dtype=np.int64) for fs in feats]
         groups: dict = {}
         group_of = np.empty(len(examples), dtype=np.int64)
@@ -113,7 +90,7 @@ class Network(JsonModelFile):
         for k, (_, candidates, target) in enumerate(examples):
             key = tuple(candidates)
             if key not in groups:
-                groups[key] = (len(groups), _task_matrix(list(key), task_index, factored))
+                groups[key] = (len(groups), task_matrix(list(key), task_index, factored))
             group_of[k] = groups[key][0]
             pos = {t: j for j, t in enumerate(key)}
             w = np.zeros(len(key))
@@ -157,16 +134,6 @@ class Network(JsonModelFile):
                        pairs=int(data.get("pairs", 0)), skips=int(data.get("skips", 0)), factored=factored)
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed grounding model: {exc}", path) from None
-
-
-def _task_matrix(tasks: list[str], task_index: dict, factored: bool) -> np.ndarray:
-    T = np.zeros((len(tasks), len(task_index)))
-    for k, t in enumerate(tasks):
-        for f in task_features(t, factored=factored):
-            i = task_index.get(f)
-            if i is not None:
-                T[k, i] = 1.0
-    return T
 
 
 def _fit(active, group_of, matrices, targets, dc: int, dt: int, hidden: int, epochs: int, rng) -> tuple:
