@@ -8,6 +8,7 @@ import random
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from bcc.cli import main
 from bcc.errors import BccError
@@ -326,3 +327,21 @@ def test_network_whole_tasks_abstain_on_unseen_ones():
     assert model.knows(tasks) and not model.knows(tasks + ["agentInRoom(agent, blue)"])
     lp = model.log_posterior("go to green", tasks)
     assert lp[1] > lp[0]
+
+
+_shipped = {}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.text(max_size=200))
+def test_any_text_gets_a_distribution_from_every_voter(text):
+    """Whatever is typed (empty, punctuation, other scripts, words never trained on), each
+    member of the shipped model and their vote give finite log-probabilities summing to 1."""
+    from bcc.grounding import corpus, pairs
+    if not _shipped:
+        _shipped["model"], _shipped["tasks"] = corpus.corpus_model(), pairs.candidates("bridge")
+    model, tasks = _shipped["model"], _shipped["tasks"]
+    for scorer in [*model.members, model]:
+        lp = np.array(scorer.log_posterior(text, tasks))
+        assert lp.shape == (len(tasks),) and np.isfinite(lp).all()
+        assert abs(np.logaddexp.reduce(lp)) < 1e-9
