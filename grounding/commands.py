@@ -10,8 +10,8 @@ import sys
 
 import click
 
-from ..cli_shared import (budget_options, compile_model, emit_json, json_option, max_memory_option, print_result,
-                          time_limit_option, within_budget)
+from ..cli_shared import (budget_options, clear_progress, compile_model, emit_json, json_option, max_memory_option,
+                          print_result, progress_enabled, time_limit_option, within_budget)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
 
@@ -214,7 +214,6 @@ def corpus_group():
 @json_option
 def corpus_generate_cmd(pairs, seed, workers, as_json):
     """Rebuild grounding/corpus/ (dungeons and pairs.jsonl) with a fixed seed (takes minutes)."""
-    from ..cli_shared import progress_enabled
     from . import corpus
     show = progress_enabled()
     progress = (lambda k, n: click.echo(f"\r  {k}/{n}", err=True, nl=False)) if show else None
@@ -265,7 +264,8 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     pairs.check_tasks(train_rows + (test_rows or []))
     splits = [(train_rows, test_rows)] if test_rows else pairs.folds(train_rows, folds or 10, seed)
     modes = list(pairs.MODES) if mode == "both" else [mode]
-    reports = [pairs.evaluate(splits, m) for m in modes]
+    reports = [pairs.evaluate(splits, m, _fold_progress(m)) for m in modes]
+    clear_progress(progress_enabled())
     if as_json:
         emit_json(reports[0] if len(reports) == 1 else {**reports[0], "modes": {r["mode"]: r for r in reports}})
         return
@@ -278,6 +278,13 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     click.echo(f"confusion (from {reports[0]['mode']}): task -> predicted, count")
     for c in reports[0]["confusion"]:
         click.echo(f"  {'ok ' if c['task'] == c['predicted'] else '   '}{c['count']:5d}  {c['task']}  ->  {c['predicted']}")
+
+
+def _fold_progress(mode: str):
+    """On a terminal, a line on stderr per model trained (ten folds of two modes take minutes)."""
+    if not progress_enabled():
+        return None
+    return lambda k, n: click.echo(f"\r  from {mode}: {k}/{n} models trained", err=True, nl=False)
 
 
 def _say_inferred(path, rows) -> None:

@@ -345,3 +345,15 @@ def test_any_text_gets_a_distribution_from_every_voter(text):
         lp = np.array(scorer.log_posterior(text, tasks))
         assert lp.shape == (len(tasks),) and np.isfinite(lp).all()
         assert abs(np.logaddexp.reduce(lp)) < 1e-9
+
+
+def test_evaluate_shows_progress_on_a_terminal_only(tmp_path, monkeypatch):
+    """Cross-validation trains a model per fold and mode (minutes on a real corpus): on a
+    terminal a line on stderr counts them; piped, stderr stays quiet."""
+    from bcc.grounding import commands
+    train = write(tmp_path / "train.jsonl", synthetic(60, 1))
+    args = ("corpus", "evaluate", "--train", train, "--folds", "2", "--dungeon", "cleanup", "--from", "tasks")
+    assert "models trained" not in run(*args).stderr
+    monkeypatch.setattr(commands, "progress_enabled", lambda: (lambda *a: None))
+    r = run(*args)
+    assert r.exit_code == 0 and "from tasks: 1/2 models trained" in r.stderr and "2/2" in r.stderr
