@@ -237,21 +237,25 @@ def corpus_generate_cmd(pairs, seed, workers, as_json):
 @click.option("--from", "mode", type=click.Choice(["tasks", "demonstrations", "both"]), default="both", show_default=True,
               help="Train on the given tasks, on tasks inferred from planned demonstrations, or report both.")
 @click.option("--seed", type=int, default=0, show_default=True, help="Seed of the fold shuffle.")
+@click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Train the folds' models on this many processes at once (each under an equal share "
+                   "of --max-memory); the report is the same for any number.")
 @budget_options
 @json_option
-def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, time_limit, max_memory, as_json):
+def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, workers, time_limit, max_memory,
+                        as_json):
     """Train a fresh model on training pairs only; report held-out accuracy overall, per level,
     and a confusion table of tasks.
 
     Without --train: the shipped corpus's training split and held-out split."""
-    with within_budget(time_limit, max_memory, as_json, train_path or "corpus"):
-        _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json)
+    with within_budget(time_limit, max_memory, as_json, train_path or "corpus") as budget:
+        _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json, workers, budget.max_memory_mb)
 
 
-def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json):
+def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json, workers=1, memory_mb=None):
     if train_path is None:
-        if test_path or folds or dungeon or levels:
-            raise BccError("--test, --folds, --dungeon and --level need --train FILE")
+        if test_path or folds or dungeon or levels or workers > 1:
+            raise BccError("--test, --folds, --dungeon, --level and --workers need --train FILE")
         return _evaluate_shipped(as_json)
     from . import pairs
     if test_path and folds:
@@ -264,7 +268,7 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     pairs.check_tasks(train_rows + (test_rows or []))
     splits = [(train_rows, test_rows)] if test_rows else pairs.folds(train_rows, folds or 10, seed)
     modes = list(pairs.MODES) if mode == "both" else [mode]
-    reports = [pairs.evaluate(splits, m, _fold_progress(m)) for m in modes]
+    reports = [pairs.evaluate(splits, m, _fold_progress(m), workers, memory_mb) for m in modes]
     clear_progress(progress_enabled())
     if as_json:
         emit_json(reports[0] if len(reports) == 1 else {**reports[0], "modes": {r["mode"]: r for r in reports}})

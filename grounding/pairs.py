@@ -160,18 +160,57 @@ def folds(rows: list[dict], k: int, seed: int = 0) -> list[tuple[list, list]]:
     return splits
 
 
-def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None) -> dict:
-    """Train a fresh model on each split's training pairs; score its held-out pairs."""
-    pairs, seconds = [], 0.0
-    for k, (train_rows, test_rows) in enumerate(splits):
-        t0 = time.perf_counter()
-        model = train(train_rows, mode)
-        seconds += time.perf_counter() - t0
-        for r, got in zip(test_rows, predict(model, test_rows)):
-            pairs.append({"id": r["id"], "level": r["level"], "command": r["command"], "task": r["task"],
-                          "predicted": got, "correct": got == r["task"]})
-        if progress:
-            progress(k + 1, len(splits))
+def _prepare_fold(item) -> None:
+    """In the parent, before forking a fold's child: what every fold needs, computed once
+    (the dungeon's candidate tasks; in demonstrations mode, each task's explanations)."""
+    train_rows, test_rows, mode = item
+    for ref in {r["dungeon"] for r in train_rows + test_rows}:
+        candidates(ref)
+    if mode == "demonstrations":
+        for ref, task in {(r["dungeon"], r["task"]) for r in train_rows}:
+            demonstrated(ref, task)
+
+
+def _fold(item) -> tuple[list[dict], float]:
+    """One split (training pairs, held-out pairs, mode): a fresh model, its predictions, and
+    its training seconds."""
+    train_rows, test_rows, mode = item
+    t0 = time.perf_counter()
+    model = train(train_rows, mode)
+    seconds = time.perf_counter() - t0
+    return [{"id": r["id"], "level": r["level"], "command": r["command"], "task": r["task"],
+             "predicted": got, "correct": got == r["task"]}
+            for r, got in zip(test_rows, predict(model, test_rows))], seconds
+
+
+def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None, workers: int = 1,
+             memory_mb: float | None = None) -> dict:
+    """Train a fresh model on each split's training pairs; score its held-out pairs. With
+    `workers` > 1 the splits run in that many child processes at once (bcc.batch.map_runs),
+    each under an equal share of `memory_mb`; the report is the same for any number of
+    workers (the models are seeded, and pairs come back in the splits' order)."""
+    done = [None] * len(splits)
+    if workers <= 1 or len(splits) == 1:
+        for k, split in enumerate(splits):
+            done[k] = _fold((*split, mode))
+            if progress:
+                progress(k + 1, len(splits))
+    else:
+        from ..batch import Limits, map_runs
+        from ..solvers.limits import BudgetExceeded
+        share = None if memory_mb is None else memory_mb / workers
+        outcomes = map_runs(_fold, [(*split, mode) for split in splits], workers=workers,
+                            limits=Limits(memory_mb=share), prepare=_prepare_fold)
+        for finished, outcome in enumerate(outcomes, 1):
+            if outcome.limit:
+                raise BudgetExceeded(outcome.limit)
+            if outcome.error:
+                raise BccError(outcome.error)
+            done[outcome.index] = outcome.value
+            if progress:
+                progress(finished, len(splits))
+    pairs = [p for fold_pairs, _ in done for p in fold_pairs]
+    seconds = sum(s for _, s in done)
     by_level = {}
     for level in sorted({p["level"] for p in pairs}):
         mine = [p for p in pairs if p["level"] == level]

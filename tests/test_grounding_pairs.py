@@ -357,3 +357,29 @@ def test_evaluate_shows_progress_on_a_terminal_only(tmp_path, monkeypatch):
     monkeypatch.setattr(commands, "progress_enabled", lambda: (lambda *a: None))
     r = run(*args)
     assert r.exit_code == 0 and "from tasks: 1/2 models trained" in r.stderr and "2/2" in r.stderr
+
+
+def test_evaluate_on_several_workers_reports_the_same(tmp_path):
+    """Folds trained in child processes (bcc.batch.map_runs) give the report one process gives:
+    the models are seeded, and the pairs come back in the folds' order."""
+    train = write(tmp_path / "train.jsonl", synthetic(90, 3))
+    base = ("corpus", "evaluate", "--train", train, "--folds", "3", "--dungeon", "cleanup", "--json")
+    one, two = run(*base), run(*base, "--workers", "2")
+    assert one.exit_code == 0 and two.exit_code == 0, two.output
+    a, b = json.loads(one.stdout), json.loads(two.stdout)
+    for report in (a, b):
+        for mode in report["modes"].values():
+            del mode["train_seconds"]
+        del report["train_seconds"]
+    assert a == b and len(a["pairs"]) == 90
+    r = run("corpus", "evaluate", "--workers", "2")
+    assert r.exit_code == 2 and "--workers need --train FILE" in r.stderr
+
+
+def test_evaluate_on_workers_stops_at_the_time_limit_and_leaves_no_child(tmp_path):
+    import multiprocessing
+    train = write(tmp_path / "train.jsonl", synthetic(400, 4))
+    r = run("corpus", "evaluate", "--train", train, "--folds", "10", "--dungeon", "cleanup", "--workers", "2",
+            "--time-limit", "1")
+    assert r.exit_code == 1 and "stopped: the time limit (--time-limit) ran out" in r.stderr
+    assert not multiprocessing.active_children()
