@@ -131,8 +131,27 @@ def index_features(examples: list, skips: int = 0, factored: bool = True) -> tup
 
 class FeatureModel(JsonModelFile):
     """What every model over command and task features shares (this one and network.py's):
-    spelling-corrected tokens, the words it knows, and whether it can score given tasks.
-    Subclasses set `speller`, `vocabulary`, `task_index` and `factored`."""
+    feature indices, the speller and training options; spelling-corrected tokens, the
+    words it knows, and whether it can score given tasks; and reading those from a file."""
+
+    def __init__(self, command_index: dict, task_index: dict, speller: Speller, pairs: int = 0,
+                 iterations: int = 0, skips: int = 0, factored: bool = True):
+        self.command_index, self.task_index = command_index, task_index
+        self.speller = speller
+        self.pairs, self.iterations = pairs, iterations
+        self.skips, self.factored = skips, factored
+        self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
+
+    @staticmethod
+    def read_features(data) -> tuple[dict, dict, Speller, dict]:
+        """The fields every feature model's file holds: (command feature -> index, task
+        feature -> index, the speller, {pairs, skips, factored}). Raises KeyError, TypeError,
+        ValueError or AttributeError on malformed fields (from_json turns them into one line)."""
+        cf, tf = [str(x) for x in data["command_features"]], [str(x) for x in data["task_features"]]
+        counts = {str(w): int(c) for w, c in data["word_counts"].items()}
+        return ({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, Speller(counts),
+                {"pairs": int(data.get("pairs", 0)), "skips": int(data.get("skips", 0)),
+                 "factored": _flag(data.get("factored", True))})
 
     def tokens(self, command: str) -> list[str]:
         return self.speller.normalise(command)
@@ -151,12 +170,8 @@ class LogLinear(FeatureModel):
 
     def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
                  pairs: int = 0, iterations: int = 0, skips: int = 0, factored: bool = True):
-        self.command_index, self.task_index = command_index, task_index
+        super().__init__(command_index, task_index, speller, pairs, iterations, skips, factored)
         self.W = weights
-        self.speller = speller
-        self.pairs, self.iterations = pairs, iterations
-        self.skips, self.factored = skips, factored
-        self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     # ---- interpreting ------------------------------------------------------------------
     def _command_vector(self, tokens: list[str]) -> np.ndarray:
@@ -235,13 +250,9 @@ class LogLinear(FeatureModel):
     def from_json(cls, data, path: str | None = None) -> LogLinear:
         expect_format(data, FORMAT, path)
         try:
-            cf, tf = [str(x) for x in data["command_features"]], [str(x) for x in data["task_features"]]
-            W = np.array(data["weights"], dtype=np.float64).reshape(len(cf), len(tf))
-            counts = {str(w): int(c) for w, c in data["word_counts"].items()}
-            return cls({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, W, Speller(counts),
-                       pairs=int(data.get("pairs", 0)), iterations=int(data.get("iterations", 0)),
-                       skips=int(data.get("skips", 0)),
-                       factored=_flag(data.get("factored", True)))
+            command_index, task_index, speller, options = cls.read_features(data)
+            W = np.array(data["weights"], dtype=np.float64).reshape(len(command_index), len(task_index))
+            return cls(command_index, task_index, W, speller, iterations=int(data.get("iterations", 0)), **options)
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed grounding model: {exc}", path) from None
 

@@ -54,12 +54,8 @@ class Network(FeatureModel):
 
     def __init__(self, command_index: dict, task_index: dict, starts: list[tuple], speller: Speller,
                  pairs: int = 0, skips: int = 0, factored: bool = True):
-        self.command_index, self.task_index = command_index, task_index
+        super().__init__(command_index, task_index, speller, pairs, 0, skips, factored)
         self.starts = starts          # [(W1 (dc x H), b1 (H), V (dt x H))]
-        self.speller = speller
-        self.pairs, self.iterations = pairs, 0
-        self.skips, self.factored = skips, factored
-        self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     # ---- interpreting ------------------------------------------------------------------
     def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
@@ -118,20 +114,15 @@ class Network(FeatureModel):
     def from_json(cls, data, path: str | None = None) -> Network:
         expect_format(data, FORMAT, path)
         try:
-            cf, tf = [str(x) for x in data["command_features"]], [str(x) for x in data["task_features"]]
+            command_index, task_index, speller, options = cls.read_features(data)
             hidden = int(data["hidden"])
             if hidden < 1:
                 raise ValueError("\"hidden\" must be at least 1")
-            starts = [(_decode(s["W1"], (len(cf), hidden)), _decode(s["b1"], (hidden,)),
-                       _decode(s["V"], (len(tf), hidden))) for s in data["starts"]]
+            starts = [(_decode(s["W1"], (len(command_index), hidden)), _decode(s["b1"], (hidden,)),
+                       _decode(s["V"], (len(task_index), hidden))) for s in data["starts"]]
             if not starts:
                 raise ValueError("\"starts\" must not be empty")
-            counts = {str(w): int(c) for w, c in data["word_counts"].items()}
-            factored = data.get("factored", True)
-            if not isinstance(factored, bool):
-                raise ValueError("\"factored\" must be true or false")
-            return cls({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, starts, Speller(counts),
-                       pairs=int(data.get("pairs", 0)), skips=int(data.get("skips", 0)), factored=factored)
+            return cls(command_index, task_index, starts, speller, **options)
         except (KeyError, TypeError, ValueError, AttributeError) as exc:
             raise BccError(f"malformed grounding model: {exc}", path) from None
 
@@ -154,9 +145,7 @@ def _fit(active, group_of, matrices, targets, dc: int, dt: int, hidden: int, epo
         m1 += 0.1 * g
         m2 *= 0.999
         m2 += 0.001 * g * g
-        corr1 = (1 - 0.9 ** t) if np.isscalar(t) else (1 - 0.9 ** t)[:, None]
-        corr2 = (1 - 0.999 ** t) if np.isscalar(t) else (1 - 0.999 ** t)[:, None]
-        p -= RATE * (m1 / corr1) / (np.sqrt(m2 / corr2) + 1e-8)
+        p -= RATE * (m1 / (1 - 0.9 ** t)) / (np.sqrt(m2 / (1 - 0.999 ** t)) + 1e-8)
 
     for _ in range(epochs):
         order = rng.permutation(n)
@@ -192,7 +181,7 @@ def _fit(active, group_of, matrices, targets, dc: int, dt: int, hidden: int, epo
             block = W1[used]
             m1, m2 = moments["W1"]
             b_m1, b_m2 = m1[used], m2[used]
-            adam(block, X.T @ gpre + L2 * block, b_m1, b_m2, seen[used])
+            adam(block, X.T @ gpre + L2 * block, b_m1, b_m2, seen[used][:, None])   # a step count per row
             W1[used], m1[used], m2[used] = block, b_m1, b_m2
             for name, p, g in (("b1", b1, gpre.sum(axis=0)), ("V", V, gV + L2 * V)):
                 steps[name] += 1
