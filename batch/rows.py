@@ -31,7 +31,7 @@ def warm_up(run: Run) -> None:
     import importlib
     from ..errors import BccError
     from ..solvers import get_solver
-    for module in ("compiler", "generate", "solvers.heuristics"):
+    for module in ("compiler", "generate", "heuristics.registry"):
         importlib.import_module(f"{__package__.rsplit('.', 1)[0]}.{module}")
     try:
         get_solver(run.solver)

@@ -5,7 +5,7 @@ their values from `sets` (a StateVar -> frozenset map; missing = anything); grid
 from `cells(x, y, z)` for known coordinates, or `layer(y)` (every value the layer may hold)
 when x or z is unknown. Every operation over-approximates, so "definitely false" results
 are sound facts about all states the sets describe. Used by reachability.py (which
-actions can ever apply), patterns.py (an abstraction heuristic) and the goal positions.
+actions can ever apply), heuristics/patterns.py (an abstraction heuristic) and the goal positions.
 """
 from __future__ import annotations
 

@@ -55,13 +55,14 @@ def cache_dir() -> Path | None:
 @functools.lru_cache(maxsize=1)
 def _version() -> str:
     """Which bcc wrote an entry: Python's version and a fingerprint (name, size, mtime) of
-    the code that makes and reads what is cached (compiler/, model.py, errors.py, the
-    grammar). Any other version or edit of that code gives other keys, so an entry is
+    the code that makes and reads what is cached (compiler/, heuristics/, model.py,
+    errors.py, the grammar). Any other version or edit of that code gives other keys, so an entry is
     never read by a bcc other than the one that wrote it. (Cheaper than asking
     importlib.metadata for the version number, which scans every installed package.)"""
     root = Path(__file__).resolve().parent.parent
     parts = [f"{FORMAT}|{sys.version_info[:3]}"]
-    for folder, pattern in (("compiler", "*.py"), ("grammar", "*.lark"), (".", "model.py"), (".", "errors.py")):
+    for folder, pattern in (("compiler", "*.py"), ("heuristics", "*.py"), ("grammar", "*.lark"), (".", "model.py"),
+                            (".", "errors.py")):
         for f in sorted((root / folder).glob(pattern)):
             st = f.stat()
             parts.append(f"{f.name}|{st.st_size}|{st.st_mtime_ns}")
@@ -221,12 +222,12 @@ _SAFE_GLOBALS = {("copyreg", "_reconstructor"), ("copyreg", "__newobj__"), ("bui
                  ("numpy._core.numeric", "_frombuffer"), ("numpy.core.numeric", "_frombuffer"),
                  ("numpy._core.multiarray", "scalar"), ("pathlib", "PosixPath"), ("pathlib", "WindowsPath"),
                  ("pathlib", "Path")}
-_DATA_MODULES = ("bcc.compiler.", "bcc.errors", "yaml.nodes", "yaml.error")
+_DATA_MODULES = ("bcc.compiler.", "bcc.heuristics.", "bcc.errors", "yaml.nodes", "yaml.error")
 
 
 class _SafeUnpickler(pickle.Unpickler):
-    """Builds plain containers, numpy arrays and data classes of bcc's compiler (and the
-    YAML nodes they keep for positions); any other global -- a function, os.system -- is
+    """Builds plain containers, numpy arrays and data classes of bcc's compiler and
+    heuristics (and the YAML nodes they keep for positions); any other global -- a function, os.system -- is
     refused, so an entry cannot run code."""
 
     def find_class(self, module: str, name: str):

@@ -16,7 +16,8 @@ from pathlib import Path
 from ..errors import BccError
 from ..model import Grid, Model, Variable
 from . import ir
-from . import patterns, relaxed
+from ..heuristics import patterns
+from ..heuristics import relaxed_view as relaxed
 from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
@@ -105,7 +106,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     built: dict = {}
 
     def relaxed_task(time_limit: float | None = None):
-        """The delete-relaxed view (relaxed.py), built once; None if it exceeds its limits.
+        """The delete-relaxed view (heuristics/relaxed_view.py), built once; None if it exceeds its limits.
         Kept in the on-disk cache (it costs more than compiling), under the pattern
         database's key plus the start's cells; a build stopped by its time limit is not."""
         if "task" not in built:
@@ -123,12 +124,12 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     counted: dict = {}
 
     def counting_database(time_limit: float | None = None):
-        """The counting abstraction's distances (counting.py), built once; None outside
+        """The counting abstraction's distances (heuristics/counting.py), built once; None outside
         what it handles or past its limits. Kept in the on-disk cache under the relaxed
         view's key; a build stopped by its time limit is not kept."""
         if "db" not in counted:
             from .cache import cached_analysis
-            from . import counting
+            from ..heuristics import counting
             key = b"\0".join([source.encode(), layout.static_grid, initial, layout.start_cells,
                                repr((n_values, search)).encode()])
             try:
@@ -143,7 +144,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     @functools.lru_cache(maxsize=1)
     def counting_wanted() -> bool:
         """Whether the goal needs cells of the grid changed (counting.goal_changes_cells)."""
-        from . import counting
+        from ..heuristics import counting
         return counting.goal_changes_cells(layout, actions, search, goal_ir, failure_ir, reach, n_values, initial)
 
     report = {

@@ -186,8 +186,8 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
 
 
 def _relaxed_once(task, cache: dict, time_limit: float | None = None):
-    """The delete-relaxed view (relaxed.py), built on first use."""
+    """The delete-relaxed view (heuristics/relaxed_pddl.py), built on first use."""
     if "view" not in cache:
-        from .relaxed import relaxed_task
+        from ..heuristics.relaxed_pddl import relaxed_task
         cache["view"] = relaxed_task(task)
     return cache["view"]

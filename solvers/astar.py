@@ -20,7 +20,7 @@ open list by it. Both are consistent, so optimality is kept: every closed state 
 has its optimal g, and the open list still holds a state of some optimal path. A budget
 check or the switch never skips work: the state popped on that expansion is expanded.
 Where the goal needs cells of the grid changed (carrying things somewhere), `auto` uses
-the counting abstraction (compiler/counting.py) instead, if it can be built.
+the counting abstraction (heuristics/counting.py) instead, if it can be built.
 """
 from __future__ import annotations
 
@@ -29,7 +29,8 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result
-from .heuristics import ADMISSIBLE, HEURISTICS, position_blind
+from ..heuristics.position import position_blind
+from ..heuristics.registry import ADMISSIBLE, HEURISTICS
 from .layers import layered
 from .options import Option, declare, heuristic_option
 

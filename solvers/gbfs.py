@@ -21,7 +21,7 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result, extract_plan
-from .heuristics import HEURISTICS
+from ..heuristics.registry import HEURISTICS
 from .options import Option, declare, heuristic_option
 
 BOOST = 10

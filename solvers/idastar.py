@@ -11,7 +11,7 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result
-from .heuristics import HEURISTICS
+from ..heuristics.registry import HEURISTICS
 from .options import declare, heuristic_option
 
 

@@ -96,10 +96,10 @@ class Option:
 
 
 def heuristic_option(default: str) -> Option:
-    """The option of every informed solver: a name in solvers.heuristics.HEURISTICS, or auto
+    """The option of every informed solver: a name in heuristics.registry.HEURISTICS, or auto
     (the solver's own choice); the names are read when a request is checked."""
     def names():
-        from .heuristics import HEURISTICS
+        from ..heuristics.registry import HEURISTICS
         return ("auto", *HEURISTICS)
     return Option("heuristic", str, default, "the heuristic (auto: the solver's choice)", choices=names)
 

@@ -197,7 +197,7 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
         else list(model.search_actions)
     dead_value = -1.0 / (1.0 - gamma)
     kinds = Kinds(model)
-    from .heuristics import manhattan
+    from ..heuristics.position import manhattan
     distance, where, longest = manhattan(model), model.agent_position, [0]
 
     def toward_goal(start):

@@ -15,7 +15,7 @@ import pytest
 
 from bcc.compiler import compile_dungeon
 from bcc.solvers import Budget, get_solver
-from bcc.solvers.heuristics import HEURISTICS
+from bcc.heuristics.registry import HEURISTICS
 
 from conftest import compiled
 

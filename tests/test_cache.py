@@ -109,7 +109,7 @@ def test_a_warm_solve_does_not_load_lark(cache_dir):
 def test_the_pattern_database_is_built_once_per_model(cache_dir, monkeypatch):
     """A second compile of the same dungeon reads its pattern database from the cache; a
     different goal (other generated code) builds its own."""
-    from bcc.compiler import patterns
+    from bcc.heuristics import patterns
     calls = []
     build = patterns.build
     monkeypatch.setattr(patterns, "build", lambda *a, **k: calls.append(1) or build(*a, **k))

@@ -1,4 +1,4 @@
-"""The counting abstraction (compiler/counting.py) and its heuristic (`counting`).
+"""The counting abstraction (heuristics/counting.py) and its heuristic (`counting`).
 
 Optimal costs come from independent searches (BFS, or an exhaustive backward Dijkstra
 over every reachable state) or from a hand derivation in a comment. The heuristic must
@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import pytest
 
-from bcc.compiler import compile_dungeon, counting
+from bcc.compiler import compile_dungeon
+from bcc.heuristics import counting
 from bcc.generate_rooms import generate_manipulation
 from bcc.simulate import replay
 from bcc.solvers import Budget, get_solver
-from bcc.solvers.heuristics import HEURISTICS
+from bcc.heuristics.registry import HEURISTICS
 from test_relaxed import TINY_ROOMS, exact_distances
 
 BUDGET = Budget(time_limit=1200, max_memory_mb=6000)

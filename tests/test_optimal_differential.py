@@ -135,7 +135,8 @@ def test_auto_searches_blind_where_the_goal_does_not_pin_the_position(name):
     searches blind, in the layered loop, and finds BFS's cost."""
     from collections import deque
 
-    from bcc.solvers.heuristics import HEURISTICS, position_blind
+    from bcc.heuristics.position import position_blind
+    from bcc.heuristics.registry import HEURISTICS
     model = compile_dungeon(name)
     assert position_blind(model)
     pdb, manhattan = HEURISTICS["pdb"](model), HEURISTICS["manhattan"](model)
@@ -154,7 +155,7 @@ def test_auto_searches_blind_where_the_goal_does_not_pin_the_position(name):
 
 
 def test_auto_keeps_the_position_heuristics_where_the_goal_is_a_place():
-    from bcc.solvers.heuristics import position_blind
+    from bcc.heuristics.position import position_blind
     for name in ("grid", "bridge", "four_rooms", "tough_maze"):
         model = compile_dungeon(name)
         assert not position_blind(model)

@@ -1,4 +1,4 @@
-"""The relaxed view and its heuristics (compiler/relaxed.py, solvers/relaxed_heuristics.py).
+"""The relaxed view and its heuristics (heuristics/relaxed_view.py, heuristics/relaxed.py).
 
 Every optimal cost-to-go here comes from an independent exhaustive search: all states
 reachable from the start, then a backward Dijkstra from the goal states over the
@@ -17,7 +17,7 @@ from bcc.generate import generate_maze
 from bcc.generate_rooms import generate_manipulation
 from bcc.simulate import replay
 from bcc.solvers import Budget, get_solver
-from bcc.solvers.relaxed_heuristics import relaxed_of
+from bcc.heuristics.relaxed import relaxed_of
 
 BUDGET = Budget(time_limit=1200, max_memory_mb=6000)  # generous: the machine may be shared
 
@@ -146,7 +146,7 @@ def test_greedy_plans_replay(tmp_path, heuristic):
 def test_greedy_evaluation_modes(tmp_path, monkeypatch, evaluation):
     """Lazy evaluation computes h once per expanded state (plus the start), eager once per
     new successor; both plans replay."""
-    from bcc.solvers import heuristics
+    from bcc.heuristics import registry as heuristics
     model = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
     calls = [0]
     make = heuristics.HEURISTICS["hff"]
@@ -170,7 +170,7 @@ def test_greedy_evaluation_modes(tmp_path, monkeypatch, evaluation):
 
 def test_last_step_view_sees_the_carry(tmp_path):
     """hff and hadd read the view whose goal is reached by a last action
-    (compiler/relaxed_last.py). Carrying the stone into the blue room: the plain delete
+    (heuristics/relaxed_last.py). Carrying the stone into the blue room: the plain delete
     relaxation empties the hand anywhere (its relaxed plan ignores the walk), the
     last-step view must place it in the blue room. Once the stone is in hand, what is
     left (walk, select, place) has no deletes that matter, so its hff is the exact cost
@@ -230,7 +230,7 @@ def test_gbfs_auto_picks_hff_where_the_pattern_database_is_blind(tmp_path):
     """gbfs's `auto`: on a carrying goal the position pattern database says 0 at the start
     although the goal does not hold, so hff guides; on a position goal (grid) the pattern
     database is kept. Both plans replay to the goal."""
-    from bcc.solvers import heuristics
+    from bcc.heuristics import registry as heuristics
     carry = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
     assert heuristics.HEURISTICS["pdb"](carry)(carry.initial) == 0
     for model, expected in ((carry, "hff"), (compile_dungeon("grid"), "pdb")):
@@ -285,7 +285,7 @@ def test_the_relaxed_view_is_built_once_and_cached(tmp_path, monkeypatch):
     """A second compile of the same dungeon reads the relaxed view from the on-disk cache
     (the same facts, operators and goal, and the same heuristic values); another goal
     builds its own; with the cache off it is rebuilt, equal to the cached one."""
-    from bcc.compiler import relaxed
+    from bcc.heuristics import relaxed_view as relaxed
     monkeypatch.setenv("BCC_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.delenv("BCC_NO_CACHE", raising=False)
     calls = []

@@ -1,4 +1,4 @@
-"""The additive exploration behind hadd and hff (solvers/relaxed_additive.py): shared
+"""The additive exploration behind hadd and hff (heuristics/relaxed_additive.py): shared
 preconditions folded into conjunction facts, counters kept from the last state, costs
 queued in buckets. None of that may change a fact's cost. The reference here is hadd
 computed the plainest way: a Bellman-Ford fixpoint over the operators, from nothing,
@@ -10,7 +10,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bcc.solvers.relaxed_additive import MIN_SHARE, Additive
+from bcc.heuristics.relaxed_additive import MIN_SHARE, Additive
 
 INF = math.inf
 

@@ -113,7 +113,7 @@ class _Oracle:
 
 def test_the_shortest_imagined_path_to_the_goal_is_optimal_in_that_model():
     from bcc.solvers import rmax
-    from bcc.solvers.heuristics import manhattan
+    from bcc.heuristics.position import manhattan
     for name in ("easy_maze", "bridge"):
         model = compiled(name)
         path = rmax._shortest_to_goal(model, _Oracle(model), model.initial, list(model.search_actions), rmax.Kinds(model),

@@ -9,7 +9,7 @@ import pytest
 
 from bcc.simulate import replay
 from bcc.solvers import Budget, get_solver, list_solvers
-from bcc.solvers.heuristics import HEURISTICS
+from bcc.heuristics.registry import HEURISTICS
 
 from conftest import FOUR_ROOMS_GOALS, compiled
 

@@ -1,4 +1,4 @@
-"""Delete-relaxation heuristics over the model's relaxed view (compiler/relaxed.py).
+"""Delete-relaxation heuristics over the model's relaxed view (relaxed_task.py).
 
 - `hmax`: the costliest goal fact, each fact costing its costliest precondition plus
   the operator; admissible and consistent.
@@ -18,6 +18,7 @@ from __future__ import annotations
 import heapq
 import math
 
+from .position import blind
 from .relaxed_additive import Additive
 
 INF = math.inf
@@ -47,7 +48,7 @@ class Relaxed:
                 self.achievers[f].append(i)
         self.preferred: frozenset = frozenset()
         self.additive = None   # explore_add's structure, built on its first call
-        # The guiding view's steps of a count (relaxed.py, fire_effects) each cost their
+        # The guiding view's steps of a count (relaxed_build.py, fire_effects) each cost their
         # action; an action's own operator in a relaxed plan is one execution of it, and
         # makes one of those steps: hff charges only the steps beyond those (_step_savings).
         chained = set(getattr(task, "chained", ()))
@@ -64,7 +65,7 @@ class Relaxed:
                     if fired:
                         self.pays[i] = fired
         # hadd and hff ask `guide`, the view whose goal is reached by a last action
-        # (compiler/relaxed_last.py), when there is one; a state where the goal holds needs
+        # (relaxed_last.py), when there is one; a state where the goal holds needs
         # no last action, so there `holds` (the model's goal test) answers 0.
         self.guide = None
         self.holds = None
@@ -338,3 +339,16 @@ def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:
             task.heuristics.guide = Relaxed(task.guide)
             task.heuristics.guide.holds = model.is_goal
     return task.heuristics
+
+
+def relaxed_heuristic(kind: str):
+    """`make(model)` for one of the four (hmax, hadd, hff, lmcut)."""
+    def make(model, time_limit: float | None = None):
+        r = relaxed_of(model, time_limit)
+        if r is None:  # the relaxed view is too big for its limits: search blind, say so
+            h = blind(model)
+            h.fallback = "blind"
+            return h
+        return getattr(r, kind)
+    make.__doc__ = f"{kind} on the relaxed view of the model (heuristics/relaxed.py)"
+    return make

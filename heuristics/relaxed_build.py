@@ -1,98 +1,21 @@
-"""A delete-relaxed view of a compiled model, built from the grounded IR (no domain words).
-
-Facts are `group = values` and `cell (x, y, z) = value`. A group is a set of state
-variables that some action writes side by side (a position's x and z), so a relaxed
-plan cannot mix coordinates of two places; cells are those of the mutable layers, static
-cells and attributes being constants already. Each grounded action is split by its
-*context*, the values of the variables that choose which cells and keyed objects it
-touches (e.g. a position, a facing, a selected slot). In a context, expressions are
-partially evaluated (relaxed_eval.py): each precondition becomes facts, a disjunction
-becomes an auxiliary fact with one zero-cost achiever per alternative, and the effects
-are split by the atoms they read (a decision tree: exact), or, when that tree is too big,
-the action adds an auxiliary "fired" fact and each conditional effect becomes a zero-cost
-operator of its own. Everything over-approximates: a relaxed operator's preconditions
-hold whenever the action's do, and it adds at least what the action makes true; so hmax
-and LM-cut on this view stay admissible. Operators that cannot fire from the start, or
-add nothing the goal needs, are dropped (relevance, as pyperplan and Fast Downward do).
-"""
+"""The builder of the relaxed view of a compiled dungeon (relaxed_view.py has the whole
+story): fact numbering by groups and cells, action contexts, partial evaluation of
+conditions and effects into operators, fired effects."""
 from __future__ import annotations
 
 import bisect
 import itertools
-import math
 import time
-from dataclasses import dataclass, field
 
-from . import ir
-from .relaxed_last import last_step_operators
-from .relaxed_eval import BAD, CellAtom, Drop, Evaluator, Fail, TooBig, conjuncts, residual, residual_effects
+from ..compiler import ir
+from .relaxed_eval import BAD, Drop, Evaluator, Fail, TooBig, conjuncts, residual, residual_effects
+from .relaxed_task import RelaxedTooBig
 
 MAX_GROUP = 4096        # largest product of value ranges a group of variables may have
 MAX_CONTEXTS = 200_000  # contexts (over all actions) before the view gives up
 SPLIT_LIMIT = 4         # leaves of an action's effect decision tree before effects are fired apart
 FIRE_LIMIT = 256        # cases of one fired effect's conditions per old value before they are relaxed
 COND_LIMIT = 4096       # leaves of one condition's decision tree before it is dropped (relaxed)
-
-
-class RelaxedTooBig(Exception):
-    """The relaxed view would exceed its limits (contexts, time); heuristics fall back."""
-
-
-@dataclass
-class RelaxedTask:
-    """Facts 0..n_facts-1; operator i: pre[i] (facts), add[i] (facts), cost[i], action[i]
-    (the grounded action it relaxes, or -1 for an auxiliary zero-cost operator)."""
-    n_facts: int
-    pre: list
-    add: list
-    cost: list
-    action: list
-    goal: tuple                      # facts; None when the goal can never hold
-    labels: list                     # a readable name per fact (debugging, tests)
-    reader: "StateReader"
-    stats: dict = field(default_factory=dict)
-    guide: "RelaxedTask | None" = None   # the goal reached by a last action (relaxed_last.py), for hadd/hff
-    chained: tuple = ()              # fired facts whose steps cost their action here (Builder.fire_effects)
-
-    def state_facts(self, state) -> list:
-        return self.reader.facts(state)
-
-
-@dataclass
-class StateReader:
-    """The one place that reads a state's variable values and cell contents. It reads the
-    dense layout of compiler/layout.py (variables, then every mutable-layer cell);
-    `to_dense` turns a state of the model into that layout (identity while states are
-    dense; the model's `dense` once states store only changed cells). Plain data, so a
-    built view can be kept in the on-disk cache (pipeline.py)."""
-
-    groups: list        # per group: the state indices of its variables
-    bases: list         # per group: its first fact
-    strides: list       # per group: each variable's stride in the group's facts
-    grid_base: int      # the state index of the first mutable cell
-    cell_base: int      # the first cell fact
-    n_values: int       # facts per cell
-    n_cells: int
-
-    to_dense = None     # a class attribute, set per model (not a field: never cached)
-
-    @classmethod
-    def of(cls, layout, groups, fact_base, strides, cell_base, n_values) -> "StateReader":
-        return cls([[layout.by_var[v].index for v in g] for g in groups], fact_base, strides, layout.grid_base,
-                   cell_base, n_values, len(layout.layers) * layout.width * layout.depth)
-
-    def facts(self, state) -> list:
-        if self.to_dense is not None:
-            state = self.to_dense(state)
-        out = []
-        for idxs, base, strides in zip(self.groups, self.bases, self.strides):
-            f = base
-            for i, st in zip(idxs, strides):
-                f += state[i] * st
-            out.append(f)
-        gb, cb, nv = self.grid_base, self.cell_base, self.n_values
-        out.extend(cb + k * nv + state[gb + k] for k in range(self.n_cells))
-        return out
 
 
 def _groups(layout, actions) -> list:
@@ -622,88 +545,3 @@ def _component(effects, atom, ev) -> tuple:
             out.append(e)
     return tuple(out)
 
-
-def build(layout, actions, search, goal, reach, n_values, initial, time_limit: float | None = None) -> RelaxedTask:
-    """The relaxed view; raises RelaxedTooBig past MAX_CONTEXTS or `time_limit` seconds."""
-    start = time.perf_counter()
-    b = Builder(layout, actions, search, goal, reach, n_values,
-                math.inf if time_limit is None else start + time_limit)
-    reader = StateReader.of(layout, b.groups, b.bases, b.strides, b.cell_base, n_values)
-    b.build_actions(reader.facts(initial))
-    goal_facts = b.build_goal()
-    all_ops = list(b.ops)
-    built = len(all_ops)
-    init_facts = reader.facts(initial)
-    last = (last_step_operators(all_ops, goal_facts, b.atom_of, b.or_minterms(), b.new_fact, b.fired_steps.get)
-            if goal_facts else None)
-    ops = _prune(all_ops, init_facts, goal_facts, b.n_facts)
-    labels = [b.labels.get(f, f"#{f}") for f in range(b.n_facts)]
-    task = RelaxedTask(b.n_facts, [o[0] for o in ops], [o[1] for o in ops], [o[2] for o in ops],
-                       [o[3] for o in ops], goal_facts, labels, reader)
-    if last is not None:
-        steps = b.step_costs
-        guide_ops = _prune([(o[0], o[1], steps.get(o, o[2]), o[3]) for o in all_ops] + last[0],
-                           init_facts, last[1], b.n_facts)
-        task.guide = RelaxedTask(b.n_facts, [o[0] for o in guide_ops], [o[1] for o in guide_ops],
-                                 [o[2] for o in guide_ops], [o[3] for o in guide_ops], last[1], labels, reader,
-                                 chained=tuple(sorted(b.chained)))
-    task.stats = {"facts": b.n_facts, "operators_built": built, "operators": len(ops),
-                  "groups": [[v.label for v in g] for g in b.groups],
-                  "seconds": round(time.perf_counter() - start, 3)}
-    return task
-
-
-def _prune(ops, init_facts, goal, n_facts) -> list:
-    """Keep operators that can fire from the start (relaxed reachability: a fact of any
-    reachable state is reachable in the relaxation) and add a fact the goal may need."""
-    reached = bytearray(n_facts)
-    for f in init_facts:
-        reached[f] = 1
-    waiting: dict = {}
-    missing = []
-    queue = []
-    for i, (pre, add, _, _) in enumerate(ops):
-        missing.append(len(pre))
-        for p in pre:
-            waiting.setdefault(p, []).append(i)
-        if not pre:
-            queue.append(i)
-    for f in init_facts:
-        for i in waiting.get(f, ()):
-            missing[i] -= 1
-            if missing[i] == 0:
-                queue.append(i)
-    fireable = set()
-    while queue:
-        i = queue.pop()
-        if i in fireable:
-            continue
-        fireable.add(i)
-        for f in ops[i][1]:
-            if not reached[f]:
-                reached[f] = 1
-                for j in waiting.get(f, ()):
-                    missing[j] -= 1
-                    if missing[j] == 0:
-                        queue.append(j)
-    if goal is None:
-        return []
-    needed = bytearray(n_facts)
-    for f in goal:
-        needed[f] = 1
-    by_add: dict = {}
-    for i in fireable:
-        for f in ops[i][1]:
-            by_add.setdefault(f, []).append(i)
-    stack = list(goal)
-    relevant = set()
-    while stack:
-        f = stack.pop()
-        for i in by_add.get(f, ()):
-            if i not in relevant:
-                relevant.add(i)
-                for p in ops[i][0]:
-                    if not needed[p]:
-                        needed[p] = 1
-                        stack.append(p)
-    return [ops[i] for i in sorted(relevant)]

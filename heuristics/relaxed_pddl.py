@@ -2,7 +2,7 @@
 
 Why its own: a ground PDDL task already is a set of boolean facts, so the view is read
 straight off it (as in Fast Downward and pyperplan) instead of being rebuilt from the IR
-by compiler/relaxed.py. Fact i is "atom i holds". An operator's preconditions are the
+by relaxed_view.py. Fact i is "atom i holds". An operator's preconditions are the
 positive atoms of its precondition's conjunction (negative atoms and disjunctions are
 dropped: a relaxation may only weaken them), its adds are its unconditional add effects.
 A conditional effect becomes a zero-cost operator of its own, enabled by a "fired" fact
@@ -10,7 +10,8 @@ that its action adds: so hmax and LM-cut stay admissible. The goal is its positi
 """
 from __future__ import annotations
 
-from .ground import GroundTask
+from ..pddl_io.ground import GroundTask
+from .relaxed_task import RelaxedTask
 
 
 class AtomReader:
@@ -37,7 +38,6 @@ def _positives(f) -> list:
 
 
 def relaxed_task(task: GroundTask):
-    from ..compiler.relaxed import RelaxedTask
     n = len(task.atoms)
     pre, add, cost, action, labels = [], [], [], [], [task.atom_text(i) for i in range(n)]
     n_facts = n

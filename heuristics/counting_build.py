@@ -1,172 +1,26 @@
-"""A counting abstraction of the whole model: exact distances in a smaller state space.
-
-The position pattern database (patterns.py) sees only where the agent stands, so a goal
-about the grid's contents ("no cell outside region R holds value v") gets h = 0, and the
-delete relaxation (relaxed.py) never has to put anything down. This abstraction keeps
-what both lose:
-
-- every state variable, exactly (the agent, what it holds);
-- exactly, each mutable cell whose start value breaks the goal's condition on that cell
-  (or that the goal reads at a fixed position): these must change;
-- every other mutable cell only as a count: cells are grouped into classes of equal
-  start value and equal goal treatment (for each value, does the goal's per-cell
-  condition hold?), and an abstract state keeps, per class, how many of its cells hold
-  each value other than the start's. The goal holds or fails alike in every arrangement
-  of the counts, so the abstract goal test is exact.
-
-An action's cells are read and written at coordinates computed from the variables (the
-agent's pose), so the abstract transition knows which exact cell or which class it
-touches. A counted cell may hold any value its class still counts (an over-
-approximation: the abstraction cannot tell which cell of a class holds what). The
-action itself runs as generated code (`apply`) on a concrete state built from the
-abstract one with each choice of values for the counted cells it touches; what it
-changes updates the exact part and the counts. Every real transition s -> t has an
-abstract one alpha(s) -> alpha(t) of the same cost, so the exact abstract distance
-(backward from the abstract goal states) never overestimates and is consistent.
-
-Built by a forward exploration of the abstract states reachable from the start's, then
-a backward search by cost; bounded by a state limit and a time limit (None past them).
-"""
+"""The counting abstraction's builder (counting.py tells the story): the cells kept
+exactly and the classes counted, the actions' touched cells, the forward exploration of
+the abstract states and the backward distances."""
 from __future__ import annotations
 
 import array
 import itertools
-import math
-import operator
 import time
-from dataclasses import dataclass
 
-from . import ir
-from .abstract import Abstract
-from .relevance import CELLS, effect_reads_writes, reads
-
-MAX_STATES = 3_000_000     # abstract states explored at most
-FULL_STATES = 500_000      # past this many with every variable kept, some are projected away
-MAX_EXACT = 12             # cells kept exactly at most
+from ..compiler import ir
+from ..compiler.abstract import Abstract
+from ..compiler.relevance import CELLS, effect_reads_writes, reads
+from .backward import backward_distances, ranges, unique
+from .counting_data import (MAX_EXACT, SHIFT, TOUCH_CAP, CountingDatabase, TooBig,
+                            Unsupported, cells_in, and_parts, const_value, effect_nodes, getter, has_loop, as_numbers)
 
 
-class Unsupported(Exception):
-    """The model is outside what this abstraction handles (no database is built)."""
-
-
-class TooBig(Exception):
-    """The abstraction ran past its state or time limit."""
-
-    def __init__(self, message: str, timed_out: bool = False):
-        super().__init__(message)
-        self.timed_out = timed_out
-
-
-TOUCH_CAP = 4  # counts are seen up to this many (cells one action touches; more: memoized by the part)
-SHIFT = 24     # an abstract state's number: variables id << SHIFT | cell part id
-
-
-@dataclass(frozen=True)
-class CountingDatabase:
-    base: int              # state[:base] are the variables
-    exact: dict            # mutable cell index -> its position in the exact part
-    start_exact: bytes     # the exact cells' start values
-    tracked: dict          # (mutable cell index, value) -> count slot (values other than the cell's start)
-    n_slots: int
-    variables: dict        # the variables (bytes) of abstract states -> their id
-    parts: dict            # cell parts (exact values, then 2-byte counts) -> their id
-    table: dict            # abstract state number -> distance to the goal (math.inf: unreachable)
-    states: int            # abstract states explored
-    projected: tuple = ()  # (index, start byte) of each variable projected away
-    shift: int = SHIFT
-
-    def part(self, entries) -> bytes | None:
-        """The cell part of a state (from its changed-cell `entries`), or None if some
-        cell holds a value the abstraction did not expect."""
-        ex = bytearray(self.start_exact)
-        counts = array.array("H", bytes(2 * self.n_slots))
-        exact, tracked = self.exact, self.tracked
-        for e in entries:
-            i = e >> 8
-            p = exact.get(i)
-            if p is not None:
-                ex[p] = e & 255
-                continue
-            slot = tracked.get((i, e & 255))
-            if slot is None:
-                return None
-            counts[slot] += 1
-        return bytes(ex) + counts.tobytes()
-
-    def project(self, state: bytes) -> bytes:
-        """The state's variables, each projected one at its start value."""
-        if not self.projected:
-            return state[:self.base]
-        vb = bytearray(state[:self.base])
-        for j, c in self.projected:
-            vb[j] = c
-        return bytes(vb)
-
-    def number(self, state: bytes, entries) -> int | None:
-        """The abstract state's number, or None if the abstraction never met it."""
-        v = self.variables.get(self.project(state))
-        r = self.parts.get(self.part(entries))
-        return None if v is None or r is None else v << SHIFT | r
-
-
-def build(layout, actions, search, goal, failure, reach, n_values, initial: bytes, apply_fns, is_goal, is_failure,
-          time_limit: float | None = None, max_states: int = MAX_STATES) -> CountingDatabase:
-    """The database; raises Unsupported outside the abstraction, TooBig past its limits.
-
-    First with every variable; past FULL_STATES abstract states, again with variables
-    projected away (any of their values: coarser, still admissible), the one with the
-    most values first, until it fits in `max_states`. Only variables that neither the
-    goal nor a cell's position reads are projected (a selected slot, a gaze)."""
-    deadline = math.inf if time_limit is None else time.process_time() + time_limit
-    args = (layout, actions, search, goal, failure, reach, n_values, initial, apply_fns, is_goal, is_failure,
-            deadline)
-    first = _Builder(*args, min(max_states, FULL_STATES))
-    try:
-        return first.run()
-    except TooBig as exc:
-        if exc.timed_out:
-            raise
-    project: list = []
-    for j in first.projectable():
-        project.append(j)
-        try:
-            return _Builder(*args, max_states, project=tuple(project)).run()
-        except TooBig as exc:
-            if exc.timed_out:
-                raise
-    raise TooBig(f"more than {max_states:,} abstract states")
-
-
-def goal_changes_cells(layout, actions, search, goal, failure, reach, n_values, initial: bytes, *rest) -> bool:
-    """Whether the goal needs some cell of the grid changed (a cell kept exactly): where
-    it does not (the goal reads variables alone), search without the abstraction is
-    usually cheaper than building it. Cheap: no state is explored."""
-    try:
-        return bool(_Builder(layout, actions, search, goal, failure, reach, n_values, initial, None, None, None,
-                             math.inf, 0).exact)
-    except (Unsupported, TooBig):
-        return False
-
-
-def build_or_none(*args, **kw) -> dict:
-    """{"db": the database, or None outside the abstraction or past its size limits} (to
-    be cached); raises TooBig when the time limit stops it (nothing worth remembering)."""
-    try:
-        return {"db": build(*args, **kw)}
-    except Unsupported:
-        return {"db": None}
-    except TooBig as exc:
-        if exc.timed_out:
-            raise
-        return {"db": None}
-
-
-class _Builder:
+class Builder:
     def __init__(self, layout, actions, search, goal, failure, reach, n_values, initial, apply_fns, is_goal,
                  is_failure, deadline, max_states, keep=None, project=()):
         if not layout.layers:
             raise Unsupported("no mutable cells")
-        from .reachability import Analysis
+        from ..compiler.reachability import Analysis
         self.L, self.actions, self.search = layout, actions, list(search)
         self.failure, self.reach = failure, reach
         self.an = Analysis(layout, n_values)
@@ -178,7 +32,7 @@ class _Builder:
         self.start = layout.start_cells
         self.area = layout.width * layout.depth
         self.written = reach.written
-        self.failure_reads_cells = CELLS in reads(failure, self.an, {}, set()) or _has_loop(failure)
+        self.failure_reads_cells = CELLS in reads(failure, self.an, {}, set()) or has_loop(failure)
         self.goal_vars = {v for v in reads(goal, self.an, {}, set()) if isinstance(v, ir.StateVar)}
         self._classify(goal, keep)
         self._plan_actions()
@@ -223,7 +77,7 @@ class _Builder:
         n = len(self.start)
         sig = [[True] * len(self._alphabet(m)) for m in range(n)]
         exact = set()
-        for conj in _conjuncts(goal):
+        for conj in and_parts(goal):
             if isinstance(conj, ir.CellLoop):
                 if conj.kind != "forall":
                     raise Unsupported("an `exists` over the grid in the goal")
@@ -234,10 +88,10 @@ class _Builder:
                             raise Unsupported("the goal's condition on a cell reads more than that cell")
                         sig[m][k] = sig[m][k] and r
                 continue
-            if _has_loop(conj):
+            if has_loop(conj):
                 raise Unsupported("a grid quantifier nested in the goal")
-            for cell in _cells_in(conj):
-                xyz = [_const(c) for c in (cell.x, cell.y, cell.z)]
+            for cell in cells_in(conj):
+                xyz = [const_value(c) for c in (cell.x, cell.y, cell.z)]
                 if None in xyz:
                     if xyz[1] is not None and xyz[1] not in self.L.layers:
                         continue   # a static layer
@@ -303,12 +157,12 @@ class _Builder:
             for _, value in a.lets:
                 nodes.append(value)
             nodes.extend(a.pre)
-            _effect_nodes(a.effects, nodes)
-            if any(_has_loop(nd) for nd in nodes):
+            effect_nodes(a.effects, nodes)
+            if any(has_loop(nd) for nd in nodes):
                 raise Unsupported(f"{a.name} quantifies over the grid")
             cells = []
             for nd in nodes:
-                cells.extend(_cells_in(nd, lets))
+                cells.extend(cells_in(nd, lets))
             coord_vars: set = set()
             for c in cells:
                 for part in (c.x, c.y, c.z):
@@ -330,10 +184,10 @@ class _Builder:
                 reads(c, self.an, lets, r)
             effect_reads_writes(a.effects, self.an, lets, r, w)
             kidx = sorted({self.L.by_var[v].index for v in r | w if v in self.L.by_var})
-            self.key_of[i] = _getter(kidx)
+            self.key_of[i] = getter(kidx)
             self.writes_of[i] = sorted(self.L.by_var[v].index for v in w if v in self.L.by_var)
         self.touch_memo: dict = {}
-        self.touch_key = {i: _getter(self.touch_vars[i][0]) for i in self.search}
+        self.touch_key = {i: getter(self.touch_vars[i][0]) for i in self.search}
 
     def touched(self, i: int, vars_: bytes) -> tuple:
         """The mutable cells action i may read or write when the variables are `vars_`,
@@ -411,7 +265,7 @@ class _Builder:
         goal_vars: list = []     # by goal class: a variables id of that class
         gclass = np.zeros(0, dtype=np.int64)
         goal_idx = sorted(self.L.by_var[v].index for v in self.goal_vars if v in self.L.by_var)
-        goal_of = _getter(goal_idx)
+        goal_of = getter(goal_idx)
         costs = [a.cost for a in self.actions]
         check_cells = self.failure_reads_cells
         max_states, deadline = self.max_states, self.deadline
@@ -487,20 +341,20 @@ class _Builder:
             if len(gclass) != len(goal_class):
                 gclass = np.concatenate((gclass, np.array(goal_class[len(gclass):], dtype=np.int64)))
             gkeys = gclass[vids] << SHIFT | rids
-            distinct = _unique(gkeys)
+            distinct = unique(gkeys)
             for gkey in distinct.tolist():
                 if gkey not in goal_memo:
                     goal_memo[gkey] = bool(self._goal(var_list[goal_vars[gkey >> SHIFT]], part_list[gkey & mask]))
             met_goal = np.array([goal_memo[g] for g in distinct.tolist()], dtype=bool)
             goals.append(frontier[met_goal[np.searchsorted(distinct, gkeys)]])
             # the actions that touch no cell, for the whole layer
-            idx, total = _ranges(fptr[vids], fptr[vids + 1])
+            idx, total = ranges(fptr[vids], fptr[vids + 1])
             layer_dst = np.concatenate((fdst[idx] | np.repeat(rids, total), np.frombuffer(dst, dtype=np.int64)))
             edge_src.append(np.concatenate((np.repeat(frontier, total), np.frombuffer(src, dtype=np.int64))))
             edge_dst.append(layer_dst)
             if not uniform:
                 edge_cost.append(np.concatenate((fcost[idx], np.frombuffer(cost, dtype=np.float64))))
-            met = _unique(layer_dst)
+            met = unique(layer_dst)
             pos = np.searchsorted(known, met)
             fresh = (pos >= len(known)) | (known[np.minimum(pos, len(known) - 1)] != met)
             frontier = met[fresh]
@@ -515,8 +369,8 @@ class _Builder:
             c_all = np.full(len(s_idx), float(costs[self.search[0]] if self.search else 1))
         else:
             c_all = np.concatenate(edge_cost)
-        dist = _backward(len(known), s_idx, d_idx, c_all, np.searchsorted(known, np.concatenate(goals)))
-        table = dict(zip(known.tolist(), _numbers(dist)))
+        dist = backward_distances(len(known), s_idx, d_idx, c_all, np.searchsorted(known, np.concatenate(goals)))
+        table = dict(zip(known.tolist(), as_numbers(dist)))
         return CountingDatabase(self.base, dict(self.exact), self.start_exact, dict(self.tracked), self.n_slots,
                                 variables, parts, table, len(known),
                                 tuple((j, self.initial[j]) for j, _ in self.projected))
@@ -550,7 +404,7 @@ class _Builder:
                     at.update(n_exact + slot for slot in self.slot_of_class[k].values())
                     at.add(n_exact + self.n_slots + k)
         cap = max((len(touched) for _, touched, _ in cell_plan), default=0)
-        view_of = _getter(sorted(at))
+        view_of = getter(sorted(at))
         if cap > TOUCH_CAP:   # more cells than the seen counts tell apart: memoized by the cell part itself
             view_of = None
         return view_of, tuple(cell_plan), tuple(free), cap
@@ -715,135 +569,3 @@ class _Builder:
         return bytes(vb)
 
 
-def _backward(n: int, src, dst, cost, goals) -> list:
-    """Cheapest cost from each abstract state to a goal state (math.inf: none)."""
-    import numpy as np
-    dist = np.full(n, np.inf)
-    if not len(goals):
-        return dist.tolist()
-    s = np.asarray(src, dtype=np.int32)
-    d = np.asarray(dst, dtype=np.int32)
-    c = np.asarray(cost, dtype=np.float64)
-    order = np.argsort(d, kind="stable")
-    s, d, c = s[order], d[order], c[order]
-    starts = np.searchsorted(d, np.arange(n + 1))
-    g = np.asarray(goals, dtype=np.int64)
-    dist[g] = 0
-    if len(c) and np.all(c == c[0]) and c[0] > 0:
-        # Equal costs: breadth-first, one frontier at a time, in numpy.
-        step = c[0]
-        frontier = _unique(g)
-        level = 0.0
-        while len(frontier):
-            level += step
-            lo, hi = starts[frontier], starts[frontier + 1]
-            if not len(lo):
-                break
-            idx, _ = _ranges(lo, hi)
-            preds = _unique(s[idx])
-            preds = preds[dist[preds] == np.inf]
-            dist[preds] = level
-            frontier = preds
-        return dist.tolist()
-    import heapq
-    sl, cl, st = s.tolist(), c.tolist(), starts.tolist()
-    out = dist.tolist()
-    heap = [(0.0, int(x)) for x in set(goals)]
-    heapq.heapify(heap)
-    while heap:
-        du, u = heapq.heappop(heap)
-        if du > out[u]:
-            continue
-        for j in range(st[u], st[u + 1]):
-            v, nd = sl[j], du + cl[j]
-            if nd < out[v]:
-                out[v] = nd
-                heapq.heappush(heap, (nd, v))
-    return out
-
-
-def _ranges(lo, hi):
-    """The indices lo[k] .. hi[k] - 1 of every k, concatenated, and each range's length:
-    the rows of a compressed adjacency table for several nodes at once."""
-    import numpy as np
-    total = hi - lo
-    return np.repeat(lo - np.concatenate(([0], np.cumsum(total)[:-1])), total) + np.arange(total.sum()), total
-
-
-def _unique(a):
-    """The sorted distinct values of an integer array (np.unique by a sort: its hash-based
-    path was 20x slower on these arrays)."""
-    import numpy as np
-    a = np.sort(a)
-    return a[np.concatenate(([True], a[1:] != a[:-1]))] if len(a) else a
-
-
-def _getter(indices):
-    """A function from bytes to the values at `indices`, as one hashable value."""
-    if len(indices) > 1:
-        return operator.itemgetter(*indices)
-    if indices:
-        j = indices[0]
-        return lambda b: b[j]
-    return lambda b: ()
-
-
-def _numbers(dist) -> list:
-    """Distances as Python numbers: ints where whole (the usual case), math.inf where no
-    goal is reachable."""
-    import numpy as np
-    d = np.asarray(dist, dtype=np.float64)
-    finite = np.isfinite(d)
-    if not np.array_equal(d[finite], np.floor(d[finite])):
-        return [x if x == math.inf or x != int(x) else int(x) for x in d.tolist()]
-    out = np.where(finite, d, 0).astype(np.int64).tolist()
-    for j in np.flatnonzero(~finite).tolist():
-        out[j] = math.inf
-    return out
-
-
-def _conjuncts(node):
-    if isinstance(node, ir.BoolOp) and node.op == "and":
-        for item in node.items:
-            yield from _conjuncts(item)
-    else:
-        yield node
-
-
-def _has_loop(node) -> bool:
-    if isinstance(node, ir.CellLoop):
-        return True
-    return any(_has_loop(c) for c in ir.children(node))
-
-
-def _cells_in(node, lets: dict | None = None, seen: set | None = None) -> list:
-    """Cell nodes in an expression (through the action's lets)."""
-    out = []
-    seen = set() if seen is None else seen
-    if isinstance(node, ir.Cell):
-        out.append(node)
-    if isinstance(node, ir.Local) and lets and node.name in lets and node.name not in seen:
-        seen.add(node.name)
-        out.extend(_cells_in(lets[node.name], lets, seen))
-    for c in ir.children(node):
-        out.extend(_cells_in(c, lets, seen))
-    return out
-
-
-def _effect_nodes(effects, out: list) -> None:
-    for e in effects:
-        if isinstance(e, ir.When):
-            out.append(e.cond)
-            _effect_nodes(e.then, out)
-            _effect_nodes(e.orelse, out)
-        elif isinstance(e, ir.SetVar):
-            out.append(e.value)
-        elif isinstance(e, ir.SetVarAt):
-            out.extend((e.key, e.value))
-        elif isinstance(e, ir.SetCell):
-            out.append(ir.Cell(e.x, e.y, e.z, "cell"))
-            out.append(e.value)
-
-
-def _const(node):
-    return node.value if isinstance(node, ir.Const) else None

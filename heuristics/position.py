@@ -1,6 +1,4 @@
-"""Heuristics over a compiled model; each `make(model)` returns h(state) -> number.
-
-`pdb` (the default) looks up the compiler's pattern database: maze distance with turns.
+"""Heuristics of the agent's position: `blind` (0 everywhere) and `manhattan`.
 
 `manhattan` is the distance from the agent's position to the nearest position at which
 the goal may hold (found by the compiler's over-approximation, so it never overestimates
@@ -82,62 +80,3 @@ def _l1_distances(seeds: dict, sizes: list, strides: list) -> list:
                 if d[i + st] + 1 < d[i]:
                     d[i] = d[i + st] + 1
     return [int(v) if v != math.inf else v for v in d]
-
-
-def pdb(model: Model):
-    """The pattern database the compiler builds (compiler/patterns.py): exact distances in
-    an abstraction over the agent's position and facing; falls back to manhattan."""
-    db = model.data("pattern_database")
-    if db is None:
-        return manhattan(model)
-    table = db.table
-    if len(db.indices) == 3:
-        (i0, i1, i2), (_, n1, n2) = db.indices, db.sizes  # the common case, without a loop
-        return lambda s: table[(s[i0] * n1 + s[i1]) * n2 + s[i2]]
-    return lambda s: table[db.index_of(s)]
-
-
-def counting(model: Model, time_limit: float | None = None):
-    """Exact distances in the compiler's counting abstraction (compiler/counting.py): every
-    variable and the cells the goal needs changed kept exactly, the other cells counted.
-    Admissible and consistent; falls back to blind search where it cannot be built."""
-    db = model.data("counting_database", time_limit=time_limit)
-    if db is None:
-        h = blind(model)
-        h.fallback = "blind"
-        return h
-    from ..model import cell_entries
-    base, variables, parts, part, get, shift = db.base, db.variables.get, db.parts.get, db.part, db.table.get, db.shift
-
-    project = db.project if db.projected else None
-    part_of: dict = {}   # a state's changed cells (its tail) -> its cell part's id: states share a few tails
-
-    def h(s):
-        v = variables(project(s) if project else s[:base])
-        tail = s[base:]
-        r = part_of.get(tail, -1)
-        if r == -1:
-            r = part_of[tail] = parts(part(cell_entries(tail)))
-        d = None if v is None or r is None else get(v << shift | r)
-        return 0 if d is None else d   # None: never met by the abstraction (cannot happen); 0 stays admissible
-    return h
-
-
-def _relaxed(kind: str):
-    def make(model: Model, time_limit: float | None = None):
-        from .relaxed_heuristics import relaxed_of
-        r = relaxed_of(model, time_limit)
-        if r is None:  # the relaxed view is too big for its limits: search blind, say so
-            h = blind(model)
-            h.fallback = "blind"
-            return h
-        return getattr(r, kind)
-    make.__doc__ = f"{kind} on the relaxed view of the model (solvers/relaxed_heuristics.py)"
-    return make
-
-
-# Never above the true cost, so 0 on every goal state: a state they rate above 0 is no goal
-ADMISSIBLE = frozenset({"blind", "manhattan", "pdb", "hmax", "lmcut", "counting"})
-HEURISTICS = {"pdb": pdb, "manhattan": manhattan, "blind": blind,
-              "hmax": _relaxed("hmax"), "hadd": _relaxed("hadd"), "hff": _relaxed("hff"), "lmcut": _relaxed("lmcut"),
-              "counting": counting}

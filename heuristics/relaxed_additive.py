@@ -1,5 +1,5 @@
 """The additive exploration behind hadd and hff, made cheap enough to run once per expanded
-state (solvers/relaxed_heuristics.py asks it).
+state (relaxed.py asks it).
 
 Its cost is the number of times a reached fact touches an operator that needs it. Three
 things cut that number, none changing a fact's cost:

@@ -1,4 +1,4 @@
-"""Partial and branching evaluation of grounded IR, for the relaxed view (relaxed.py).
+"""Partial and branching evaluation of grounded IR, for the relaxed view (relaxed_build.py).
 
 `residual` folds what a context pins (variables, cells, lets, static cells) into
 constants and leaves *atoms*: `Var` nodes (read through their group) and `CellAtom`s.
@@ -12,7 +12,7 @@ from __future__ import annotations
 import operator
 from dataclasses import dataclass
 
-from . import ir
+from ..compiler import ir
 
 MAX_LOOP_CELLS = 20_000   # a grid quantifier over more cells is left unexpanded (and relaxed away)
 

@@ -16,10 +16,12 @@ import itertools
 import math
 from dataclasses import dataclass
 
-from . import ir
-from .abstract import Abstract, maybe_true
-from .reachability import Analysis
-from .relevance import effect_reads_writes, reads
+from ..compiler import ir
+from ..compiler.abstract import Abstract, maybe_true
+from ..compiler.reachability import Analysis
+from ..compiler.relevance import effect_reads_writes, reads
+from ..model import Model
+from .position import manhattan
 
 MAX_PATTERN_STATES = 1_000_000
 
@@ -189,3 +191,16 @@ def _writes(an, ab, effects, pattern, pset) -> tuple:
 
     walk(effects, True)
     return options, always
+
+
+def pdb(model: Model):
+    """The pattern database (built by `build` above): exact distances in an abstraction
+    over the agent's position and facing; falls back to manhattan."""
+    db = model.data("pattern_database")
+    if db is None:
+        return manhattan(model)
+    table = db.table
+    if len(db.indices) == 3:
+        (i0, i1, i2), (_, n1, n2) = db.indices, db.sizes  # the common case, without a loop
+        return lambda s: table[(s[i0] * n1 + s[i1]) * n2 + s[i2]]
+    return lambda s: table[db.index_of(s)]

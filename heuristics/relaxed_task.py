@@ -1,0 +1,70 @@
+"""The one relaxed task type: facts, operators (preconditions, adds, cost, the action
+they relax), a goal, and the reader that turns a state into its facts. Built from a
+compiled dungeon (relaxed_view.py) or an imported PDDL task (relaxed_pddl.py), explored
+by the relaxed heuristics (relaxed.py)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+class RelaxedTooBig(Exception):
+    """The relaxed view would exceed its limits (contexts, time); heuristics fall back."""
+
+
+@dataclass
+class RelaxedTask:
+    """Facts 0..n_facts-1; operator i: pre[i] (facts), add[i] (facts), cost[i], action[i]
+    (the grounded action it relaxes, or -1 for an auxiliary zero-cost operator)."""
+    n_facts: int
+    pre: list
+    add: list
+    cost: list
+    action: list
+    goal: tuple                      # facts; None when the goal can never hold
+    labels: list                     # a readable name per fact (debugging, tests)
+    reader: "StateReader"
+    stats: dict = field(default_factory=dict)
+    guide: "RelaxedTask | None" = None   # the goal reached by a last action (relaxed_last.py), for hadd/hff
+    chained: tuple = ()              # fired facts whose steps cost their action here (Builder.fire_effects)
+
+    def state_facts(self, state) -> list:
+        return self.reader.facts(state)
+
+
+@dataclass
+class StateReader:
+    """The one place that reads a state's variable values and cell contents. It reads the
+    dense layout of compiler/layout.py (variables, then every mutable-layer cell);
+    `to_dense` turns a state of the model into that layout (identity while states are
+    dense; the model's `dense` once states store only changed cells). Plain data, so a
+    built view can be kept in the on-disk cache (pipeline.py)."""
+
+    groups: list        # per group: the state indices of its variables
+    bases: list         # per group: its first fact
+    strides: list       # per group: each variable's stride in the group's facts
+    grid_base: int      # the state index of the first mutable cell
+    cell_base: int      # the first cell fact
+    n_values: int       # facts per cell
+    n_cells: int
+
+    to_dense = None     # a class attribute, set per model (not a field: never cached)
+
+    @classmethod
+    def of(cls, layout, groups, fact_base, strides, cell_base, n_values) -> "StateReader":
+        return cls([[layout.by_var[v].index for v in g] for g in groups], fact_base, strides, layout.grid_base,
+                   cell_base, n_values, len(layout.layers) * layout.width * layout.depth)
+
+    def facts(self, state) -> list:
+        if self.to_dense is not None:
+            state = self.to_dense(state)
+        out = []
+        for idxs, base, strides in zip(self.groups, self.bases, self.strides):
+            f = base
+            for i, st in zip(idxs, strides):
+                f += state[i] * st
+            out.append(f)
+        gb, cb, nv = self.grid_base, self.cell_base, self.n_values
+        out.extend(cb + k * nv + state[gb + k] for k in range(self.n_cells))
+        return out
+
+
