@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import sys
+from collections import Counter
 
 import click
 
@@ -237,49 +238,78 @@ def corpus_generate_cmd(pairs, seed, workers, as_json):
 @click.option("--from", "mode", type=click.Choice(["tasks", "demonstrations", "both"]), default="both", show_default=True,
               help="Train on the given tasks, on tasks inferred from planned demonstrations, or report both.")
 @click.option("--seed", type=int, default=0, show_default=True, help="Seed of the fold shuffle.")
+@click.option("--shuffles", type=click.IntRange(min=1), default=1, show_default=True,
+              help="Cross-validate this many shuffles (seeds --seed, --seed + 1, ...); report each, their mean, "
+                   "spread and a 95% interval per level.")
+@click.option("--nested", is_flag=True,
+              help="Choose each fold's votes by a 3-fold cross-validation inside its training pairs (nested).")
 @click.option("--workers", type=click.IntRange(min=1), default=1, show_default=True,
               help="Train the folds' models on this many processes at once (each under an equal share "
                    "of --max-memory); the report is the same for any number.")
 @budget_options
 @json_option
-def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, workers, time_limit, max_memory,
-                        as_json):
+def corpus_evaluate_cmd(train_path, test_path, folds, dungeon, levels, mode, seed, shuffles, nested, workers,
+                        time_limit, max_memory, as_json):
     """Train a fresh model on training pairs only; report held-out accuracy overall, per level,
     and a confusion table of tasks.
 
     Without --train: the shipped corpus's training split and held-out split."""
     with within_budget(time_limit, max_memory, as_json, train_path or "corpus") as budget:
-        _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json, workers, budget.max_memory_mb)
+        _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json, workers, budget.max_memory_mb,
+                  shuffles, nested)
 
 
-def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json, workers=1, memory_mb=None):
+def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json, workers=1, memory_mb=None,
+              shuffles=1, nested=False):
     if train_path is None:
-        if test_path or folds or dungeon or levels or workers > 1:
-            raise BccError("--test, --folds, --dungeon, --level and --workers need --train FILE")
+        if test_path or folds or dungeon or levels or workers > 1 or shuffles > 1 or nested:
+            raise BccError("--test, --folds, --dungeon, --level, --shuffles, --nested and --workers need --train FILE")
         return _evaluate_shipped(as_json)
     from . import pairs
+    from .shuffles import summarise
     if test_path and folds:
         raise BccError("give --test FILE or --folds K, not both")
+    if test_path and shuffles > 1:
+        raise BccError("--shuffles needs cross-validation: give --folds K, not --test FILE")
     train_rows = pairs.load(train_path, dungeon, levels)
     _say_inferred(train_path, train_rows)
     test_rows = pairs.load(test_path, dungeon, levels) if test_path else None
     if test_rows:
         _say_inferred(test_path, test_rows)
     pairs.check_tasks(train_rows + (test_rows or []))
-    splits = [(train_rows, test_rows)] if test_rows else pairs.folds(train_rows, folds or 10, seed)
+    seeds = [seed + k for k in range(shuffles)]
     modes = list(pairs.MODES) if mode == "both" else [mode]
-    reports = [pairs.evaluate(splits, m, _fold_progress(m), workers, memory_mb) for m in modes]
+    runs = {m: [] for m in modes}       # mode -> one report per shuffle
+    for s in seeds:
+        splits = [(train_rows, test_rows)] if test_rows else pairs.folds(train_rows, folds or 10, s)
+        for m in modes:
+            runs[m].append(pairs.evaluate(splits, m, _fold_progress(m), workers, memory_mb, s if nested else None))
     clear_progress(progress_enabled())
+    reports = [runs[m][0] | ({"shuffles": [{"seed": s, "accuracy": r["accuracy"], "by_level": r["by_level"]}
+                                           | ({"chosen": r["chosen"]} if nested else {})
+                                           for s, r in zip(seeds, runs[m])],
+                              "summary": summarise(runs[m])} if shuffles > 1 else {}) for m in modes]
     if as_json:
         emit_json(reports[0] if len(reports) == 1 else {**reports[0], "modes": {r["mode"]: r for r in reports}})
         return
-    how = f"train on {train_path}, test on {test_path}" if test_rows else f"{len(splits)}-fold cross-validation over {train_path}"
-    click.echo(f"{len(train_rows) + len(test_rows or [])} pairs; {how}")
+    how = f"train on {train_path}, test on {test_path}" if test_rows else \
+        f"{folds or 10}-fold cross-validation over {train_path}" + (f", {shuffles} shuffles" if shuffles > 1 else "")
+    click.echo(f"{len(train_rows) + len(test_rows or [])} pairs; {how}" + ("; votes chosen by nested 3-fold" if nested else ""))
     for r in reports:
+        if shuffles > 1:
+            click.echo(f"from {r['mode']}: mean of {shuffles} shuffles, lowest-highest, 95% interval (Wilson)")
+            for level, v in r["summary"].items():
+                click.echo(f"  {level:>6}  {v['mean']:.1%}  {v['low']:.1%}-{v['high']:.1%}  "
+                           f"[{v['ci95'][0]:.1%}, {v['ci95'][1]:.1%}]  of {v['total']}")
+            continue
         click.echo(f"from {r['mode']}: accuracy {r['accuracy']:.1%} (training {r['train_seconds']:.1f} s a model)")
         for level, v in r["by_level"].items():
             click.echo(f"  {level:>6}  {v['correct']:5d}/{v['total']:<5d} {v['accuracy']:.1%}")
-    click.echo(f"confusion (from {reports[0]['mode']}): task -> predicted, count")
+    if nested:
+        chosen = Counter(c["config"] for r in reports for one in runs[r["mode"]] for c in one["chosen"])
+        click.echo("votes chosen by the inner cross-validations: "
+                   + ", ".join(f"{name} {n}" for name, n in chosen.most_common()))
+    click.echo(f"confusion (from {reports[0]['mode']}{', first shuffle' if shuffles > 1 else ''}): task -> predicted, count")
     for c in reports[0]["confusion"]:
         click.echo(f"  {'ok ' if c['task'] == c['predicted'] else '   '}{c['count']:5d}  {c['task']}  ->  {c['predicted']}")
 

@@ -60,13 +60,12 @@ class Ensemble(JsonModelFile):
         return self.members[0].known(command_words)
 
     def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
-        voting = [k for k, m in enumerate(self.members) if getattr(m, "knows", lambda _: True)(tasks)]
-        weights = self.weights[voting]
-        if weights.sum() <= 0:      # only members that cannot score these tasks have a vote
-            voting, weights = list(range(len(self.members))), self.weights
-        s = weights @ np.array([self.members[k].log_posterior(command, tasks) for k in voting]) / weights.sum()
-        s -= s.max()
-        return list(s - np.log(np.exp(s).sum()))
+        knows = [getattr(m, "knows", lambda _: True)(tasks) for m in self.members]
+        scores = [m.log_posterior(command, tasks) if w > 0 and k else None
+                  for m, w, k in zip(self.members, self.weights, knows)]
+        if all(s is None for s in scores):     # only members that cannot score these tasks have a vote
+            scores = [m.log_posterior(command, tasks) for m in self.members]
+        return list(vote(self.weights, scores, knows))
 
     # ---- files -------------------------------------------------------------------------
     def to_json(self) -> dict:
@@ -89,3 +88,18 @@ class Ensemble(JsonModelFile):
             raise BccError("malformed grounding model: \"weights\" must be one non-negative number per member, "
                            "not all zero", path)
         return cls([KINDS[m["format"]].from_json(m, path) for m in members], weights)
+
+
+def vote(weights, scores: list, knows: list[bool]) -> np.ndarray:
+    """The weighted mean of the members' log-probabilities over the same tasks, normalised:
+    `scores[k]` is member k's (None when it has no vote), and a member that does not `know`
+    the tasks abstains, unless only such members have a vote. The one rule, used by
+    Ensemble.log_posterior and by the nested cross-validation's choice of votes (nested.py)."""
+    weights = np.asarray(weights, dtype=np.float64)
+    voting = [k for k, w in enumerate(weights) if w > 0 and knows[k]]
+    if not voting:
+        voting = [k for k, w in enumerate(weights) if w > 0]
+    w = weights[voting]
+    s = w @ np.array([scores[k] for k in voting]) / w.sum()
+    s = s - s.max()
+    return s - np.log(np.exp(s).sum())

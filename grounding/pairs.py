@@ -140,6 +140,16 @@ def train(rows: list[dict], mode: str = "tasks"):
     return Ensemble.train(examples(rows, mode))
 
 
+def train_nested(rows: list[dict], mode: str = "tasks", seed: int = 0):
+    """(the ensemble whose votes an inner cross-validation over `rows` alone chose, the
+    chosen configuration's name, {configuration: inner accuracy}): nested.py."""
+    from . import nested
+    train_examples = examples(rows, mode)
+    inner = folds(list(range(len(rows))), nested.INNER, seed)
+    name, accuracy = nested.choose(train_examples, lambda k: rows[k]["task"], inner)
+    return nested.train(train_examples, name), name, accuracy
+
+
 def predict(model, rows: list[dict]) -> list[str]:
     out = []
     for r in rows:
@@ -163,7 +173,7 @@ def folds(rows: list[dict], k: int, seed: int = 0) -> list[tuple[list, list]]:
 def _prepare_fold(item) -> None:
     """In the parent, before forking a fold's child: what every fold needs, computed once
     (the dungeon's candidate tasks; in demonstrations mode, each task's explanations)."""
-    train_rows, test_rows, mode = item
+    train_rows, test_rows, mode, _ = item
     for ref in {r["dungeon"] for r in train_rows + test_rows}:
         candidates(ref)
     if mode == "demonstrations":
@@ -171,35 +181,44 @@ def _prepare_fold(item) -> None:
             demonstrated(ref, task)
 
 
-def _fold(item) -> tuple[list[dict], float]:
-    """One split (training pairs, held-out pairs, mode): a fresh model, its predictions, and
-    its training seconds."""
-    train_rows, test_rows, mode = item
+def _fold(item) -> tuple[list[dict], float, dict | None]:
+    """One split (training pairs, held-out pairs, mode, nested seed or None): a fresh model
+    (with a seed, its votes chosen by an inner cross-validation of the training pairs),
+    its predictions, its training seconds (the inner cross-validation included), and
+    what the inner cross-validation chose."""
+    train_rows, test_rows, mode, nested_seed = item
     t0 = time.perf_counter()
-    model = train(train_rows, mode)
+    chosen = None
+    if nested_seed is None:
+        model = train(train_rows, mode)
+    else:
+        model, name, inner = train_nested(train_rows, mode, nested_seed)
+        chosen = {"config": name, "inner_accuracy": inner}
     seconds = time.perf_counter() - t0
     return [{"id": r["id"], "level": r["level"], "command": r["command"], "task": r["task"],
              "predicted": got, "correct": got == r["task"]}
-            for r, got in zip(test_rows, predict(model, test_rows))], seconds
+            for r, got in zip(test_rows, predict(model, test_rows))], seconds, chosen
 
 
 def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None, workers: int = 1,
-             memory_mb: float | None = None) -> dict:
+             memory_mb: float | None = None, nested_seed: int | None = None) -> dict:
     """Train a fresh model on each split's training pairs; score its held-out pairs. With
+    `nested_seed`, each split's votes are chosen by an inner cross-validation of its
+    training pairs (shuffled with that seed; nested.py), reported under "chosen". With
     `workers` > 1 the splits run in that many child processes at once (bcc.batch.map_runs),
     each under an equal share of `memory_mb`; the report is the same for any number of
     workers (the models are seeded, and pairs come back in the splits' order)."""
     done = [None] * len(splits)
     if workers <= 1 or len(splits) == 1:
         for k, split in enumerate(splits):
-            done[k] = _fold((*split, mode))
+            done[k] = _fold((*split, mode, nested_seed))
             if progress:
                 progress(k + 1, len(splits))
     else:
         from ..batch import Limits, map_runs
         from ..solvers.limits import BudgetExceeded
         share = None if memory_mb is None else memory_mb / workers
-        outcomes = map_runs(_fold, [(*split, mode) for split in splits], workers=workers,
+        outcomes = map_runs(_fold, [(*split, mode, nested_seed) for split in splits], workers=workers,
                             limits=Limits(memory_mb=share), prepare=_prepare_fold)
         for finished, outcome in enumerate(outcomes, 1):
             if outcome.limit:
@@ -209,8 +228,8 @@ def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None
             done[outcome.index] = outcome.value
             if progress:
                 progress(finished, len(splits))
-    pairs = [p for fold_pairs, _ in done for p in fold_pairs]
-    seconds = sum(s for _, s in done)
+    pairs = [p for fold_pairs, _, _ in done for p in fold_pairs]
+    seconds = sum(s for _, s, _ in done)
     by_level = {}
     for level in sorted({p["level"] for p in pairs}):
         mine = [p for p in pairs if p["level"] == level]
@@ -219,4 +238,5 @@ def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None
     confusion = Counter((p["task"], p["predicted"]) for p in pairs)
     return {"mode": mode, "accuracy": sum(p["correct"] for p in pairs) / len(pairs), "by_level": by_level,
             "confusion": [{"task": t, "predicted": g, "count": c} for (t, g), c in sorted(confusion.items())],
-            "train_seconds": round(seconds / len(splits), 3), "pairs": pairs}
+            "train_seconds": round(seconds / len(splits), 3), "pairs": pairs} | \
+        ({"chosen": [c for _, _, c in done]} if nested_seed is not None else {})
