@@ -141,6 +141,12 @@ class StateView:
         return self.model.grid.array(self.state)
 
 
+# Analyses of any model that a layer above builds on first use, name -> function(model,
+# **options): the heuristics' tables (bcc.heuristics registers them when imported, which
+# bcc.solvers does). Base code never imports those layers; they fill this table.
+PROVIDED: dict = {}
+
+
 @dataclass(frozen=True)
 class Model:
     name: str
@@ -167,11 +173,17 @@ class Model:
     lazy: dict = field(default_factory=dict)   # analyses computed on first use: name -> function()
     live_successors: Callable | None = None    # successors for search (see `search_successors`)
     fresh_successors: Callable | None = None   # live fused with a duplicate check (see `search_fresh`)
+    memo: dict = field(default_factory=dict, compare=False, repr=False)  # what PROVIDED analyses built for it
 
     def data(self, name: str, **options):
-        """A lazily computed analysis of the model, e.g. "pattern_database" (or None)."""
+        """A lazily computed analysis of the model, e.g. "pattern_database" (or None): the
+        model's own (`lazy`, from its back end), else one that a layer above provides for
+        every model (`PROVIDED`: the heuristics' tables)."""
         make = self.lazy.get(name)
-        return make(**options) if make else None
+        if make is not None:
+            return make(**options)
+        provide = PROVIDED.get(name)
+        return provide(self, **options) if provide else None
 
     def search_successors(self) -> Callable[[bytes], list]:
         """`successors` as a search wants them: next states equal to the state and failure

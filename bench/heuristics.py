@@ -64,6 +64,7 @@ def build_seconds(dungeon: str, counting: bool) -> dict:
     this process: CPU seconds, with the cache off so they are really built; both are then
     written to the cache for the warm runs."""
     import os
+    import bcc.heuristics  # noqa: F401 - the heuristics' tables as model data
     from bcc.compiler import compile_dungeon
     model = compile_dungeon(dungeon)
     start = time.perf_counter()

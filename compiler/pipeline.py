@@ -10,14 +10,13 @@ from __future__ import annotations
 
 import functools
 import itertools
+from dataclasses import dataclass
 from pathlib import Path
 
 
 from ..errors import BccError
 from ..model import Grid, Model, Variable
 from . import ir
-from ..heuristics import patterns
-from ..heuristics import relaxed_view as relaxed
 from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
@@ -27,6 +26,23 @@ from .layout import make_layout
 from .reachability import Analysis, reachable
 from .relevance import relevant_actions
 from .source import Origin
+
+@dataclass(frozen=True)
+class Compiled:
+    """What a compile knows beyond the Model, for analyses that layers above build on
+    demand (the heuristics' tables, heuristics/tables.py): `model.data("compiled")`."""
+    layout: object          # the state layout (layout.py); its start cells, static grid
+    actions: list           # the grounded actions (emit.GroundAction, IR)
+    search: list            # the actions `successors` generates (relevance.py)
+    goal: object            # the goal and the failure condition (IR)
+    failure: object
+    reach: object           # reachability.py's answer: values, applicable actions, written layers
+    n_values: int           # values a grid cell may hold
+    initial: bytes          # the start (the variables; cells at their start values)
+    source: str             # the generated code: the cached tables' key
+    position_vars: list     # the agent's position variables
+    functions: dict         # the generated functions by name (apply_i, goal, failure, ...)
+
 
 __all__ = ["compile_dungeon", "load_dungeon", "load_domain", "shipped_dungeons", "resolve_dungeon_path"]
 
@@ -83,17 +99,6 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     position, static_pos, position_vars = _position(dungeon, layout)
     goal_positions = _goal_positions(an, reach, goal_ir, position, static_pos, position_vars, layout)
 
-    @functools.lru_cache(maxsize=1)
-    def pattern_database():
-        """Built once, and kept in the on-disk cache: on a big maze it costs more than the
-        whole compile. Its key: the generated code (actions, goal, layout), the grid, the
-        start and the pattern's candidates -- everything the build reads."""
-        from .cache import cached_analysis
-        key = b"\0".join([source.encode(), layout.static_grid, initial,
-                           repr((n_values, [v.label for v in position_vars], search)).encode()])
-        return cached_analysis("patterns", key, lambda: patterns.build(layout, actions, search, goal_ir, reach,
-                                                                       n_values, position_vars, initial))
-
     layer_expanders = functools.lru_cache(maxsize=1)(ns["_build_layers"])
 
     def layer_skips() -> dict:
@@ -103,50 +108,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         names = lambda d: {actions[a].name: [actions[b].name for b in bs] for a, bs in d.items()}
         return {"undone_by": names(ns["_undo"]), "skipped_after": names(ns["_skips"])}
 
-    built: dict = {}
-
-    def relaxed_task(time_limit: float | None = None):
-        """The delete-relaxed view (heuristics/relaxed_view.py), built once; None if it exceeds its limits.
-        Kept in the on-disk cache (it costs more than compiling), under the pattern
-        database's key plus the start's cells; a build stopped by its time limit is not."""
-        if "task" not in built:
-            from .cache import cached_analysis
-            key = b"\0".join([source.encode(), layout.static_grid, initial, layout.start_cells,
-                               repr((n_values, search)).encode()])
-            try:
-                found = cached_analysis("relaxed", key, lambda: _relaxed_or_none(
-                    layout, actions, search, goal_ir, reach, n_values, initial, time_limit))
-            except relaxed.RelaxedTooBig:
-                return None  # out of time: another call, with more time, may still build it
-            built["task"] = found.get("task") if isinstance(found, dict) else None
-        return built["task"]
-
-    counted: dict = {}
-
-    def counting_database(time_limit: float | None = None):
-        """The counting abstraction's distances (heuristics/counting.py), built once; None outside
-        what it handles or past its limits. Kept in the on-disk cache under the relaxed
-        view's key; a build stopped by its time limit is not kept."""
-        if "db" not in counted:
-            from .cache import cached_analysis
-            from ..heuristics import counting
-            key = b"\0".join([source.encode(), layout.static_grid, initial, layout.start_cells,
-                               repr((n_values, search)).encode()])
-            try:
-                found = cached_analysis("counting", key, lambda: counting.build_or_none(
-                    layout, actions, search, goal_ir, failure_ir, reach, n_values, initial,
-                    [ns[f"apply_{i}"] for i in range(len(actions))], ns["goal"], ns["failure"], time_limit))
-            except counting.TooBig:
-                return None  # out of time: another call, with more time, may still build it
-            counted["db"] = found.get("db") if isinstance(found, dict) else None
-        return counted["db"]
-
-    @functools.lru_cache(maxsize=1)
-    def counting_wanted() -> bool:
-        """Whether the goal needs cells of the grid changed (counting.goal_changes_cells)."""
-        from ..heuristics import counting
-        return counting.goal_changes_cells(layout, actions, search, goal_ir, failure_ir, reach, n_values, initial)
-
+    compiled = Compiled(layout, actions, search, goal_ir, failure_ir, reach, n_values, initial, source, position_vars, ns)
     report = {
         "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
         "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
@@ -181,26 +143,10 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
         position=position, position_static=static_pos, goal_positions=goal_positions,
         report=report, source=source, display=_display(dungeon, layout),
-        search_actions=tuple(search), lazy={"pattern_database": pattern_database,
-                                                    "relaxed_task": relaxed_task,
-                                                    "counting_database": counting_database,
-                                                    "counting_wanted": counting_wanted,
+        search_actions=tuple(search), lazy={"compiled": lambda: compiled,
                                                     "layer_expanders": layer_expanders,
                                                     "layer_skips": layer_skips,
                                                     "dense_functions": dense_functions})
-
-
-def _relaxed_or_none(layout, actions, search, goal_ir, reach, n_values, initial, time_limit) -> dict:
-    """{"task": the relaxed view, or None past its size limits}; raises RelaxedTooBig when
-    the time limit stops it (nothing to remember then)."""
-    try:
-        task = relaxed.build(layout, actions, search, goal_ir, reach, n_values, initial + layout.start_cells,
-                             time_limit)  # dense
-    except relaxed.RelaxedTooBig as exc:
-        if "time" in str(exc):
-            raise
-        task = None
-    return {"task": task}
 
 
 def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:

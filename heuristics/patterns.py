@@ -193,7 +193,7 @@ def _writes(an, ab, effects, pattern, pset) -> tuple:
     return options, always
 
 
-def pdb(model: Model):
+def pdb(model: Model, time_limit: float | None = None):
     """The pattern database (built by `build` above): exact distances in an abstraction
     over the agent's position and facing; falls back to manhattan."""
     db = model.data("pattern_database")

@@ -11,11 +11,11 @@ import math
 from ..model import Model
 
 
-def blind(model: Model):
+def blind(model: Model, time_limit: float | None = None):
     return lambda state: 0
 
 
-def manhattan(model: Model):
+def manhattan(model: Model, time_limit: float | None = None):
     goals = model.goal_positions
     if goals is None:
         return blind(model)

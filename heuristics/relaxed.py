@@ -15,10 +15,10 @@ unreached preconditions. A state is turned into facts by the view's one state re
 """
 from __future__ import annotations
 
+import functools
 import heapq
 import math
 
-from .position import blind
 from .relaxed_additive import Additive
 
 INF = math.inf
@@ -27,8 +27,9 @@ INF = math.inf
 class Relaxed:
     """Precomputed indices over a RelaxedTask, and the four heuristics."""
 
-    def __init__(self, task):
+    def __init__(self, task, facts_of):
         self.task = task
+        self.facts_of = facts_of   # a model's state -> the facts that hold in it
         self.n_facts, self.n_ops = task.n_facts, len(task.pre)
         self.pre, self.add, self.cost, self.action = task.pre, task.add, task.cost, task.action
         self.pre_of = [[] for _ in range(self.n_facts)]
@@ -148,7 +149,7 @@ class Relaxed:
 
     # ---- heuristics ---------------------------------------------------------------------------
     def hmax(self, state) -> float:
-        cost, _, _ = self.explore(self.task.state_facts(state), self.cost, False, True)
+        cost, _, _ = self.explore(self.facts_of(state), self.cost, False, True)
         return self.goal_cost(cost, False)
 
     def hadd(self, state) -> float:
@@ -160,7 +161,7 @@ class Relaxed:
             # miss a last action the plain view has, never declare a dead end for it.
         if self.holds is not None and self.holds(state):
             return 0
-        cost, _ = self.explore_add(self.task.state_facts(state), self.cost)
+        cost, _ = self.explore_add(self.facts_of(state), self.cost)
         return self.goal_cost(cost, True)
 
     def hff(self, state) -> float:
@@ -174,7 +175,7 @@ class Relaxed:
         if self.holds is not None and self.holds(state):
             self.preferred = frozenset()
             return 0
-        cost, sup = self.explore_add(self.task.state_facts(state), self.cost)
+        cost, sup = self.explore_add(self.facts_of(state), self.cost)
         if self.goal is None or any(cost[g] == INF for g in self.goal):
             self.preferred = frozenset()
             return INF
@@ -228,7 +229,7 @@ class Relaxed:
         return out
 
     def lmcut(self, state) -> float:
-        init = self.task.state_facts(state)
+        init = self.facts_of(state)
         if self.goal is None:
             return INF
         if not self.goal:
@@ -327,28 +328,44 @@ class Relaxed:
 
 
 def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:
-    """The model's Relaxed heuristics (built once per model), or None when the relaxed
-    view cannot be built within its limits (or `time_limit` seconds)."""
-    task = model.data("relaxed_task", time_limit=time_limit)
-    if task is None:
-        return None
-    if getattr(task, "heuristics", None) is None:
-        task.reader.to_dense = getattr(model, "dense", None)  # compact states (issue 18) read densely
-        task.heuristics = Relaxed(task)
-        if getattr(task, "guide", None) is not None:
-            task.heuristics.guide = Relaxed(task.guide)
-            task.heuristics.guide.holds = model.is_goal
-    return task.heuristics
+    """The model's Relaxed heuristics (built once per model, kept in `model.memo`), or
+    None when the relaxed view cannot be built within its limits (or `time_limit` seconds)."""
+    r = model.memo.get("relaxed")
+    if r is None:
+        task = model.data("relaxed_task", time_limit=time_limit)
+        if task is None:
+            return None
+        read = task.reader.facts
+        if task.reader.reads_dense:
+            dense = model.dense   # a model's state stores only its changed cells (issue 18)
+
+            def facts_of(state):
+                return read(dense(state))
+        else:
+            facts_of = read
+        r = model.memo["relaxed"] = Relaxed(task, facts_of)
+        if task.guide is not None:
+            r.guide = Relaxed(task.guide, facts_of)
+            r.guide.holds = model.is_goal
+    return r
 
 
-def relaxed_heuristic(kind: str):
-    """`make(model)` for one of the four (hmax, hadd, hff, lmcut)."""
-    def make(model, time_limit: float | None = None):
-        r = relaxed_of(model, time_limit)
-        if r is None:  # the relaxed view is too big for its limits: search blind, say so
-            h = blind(model)
-            h.fallback = "blind"
-            return h
-        return getattr(r, kind)
-    make.__doc__ = f"{kind} on the relaxed view of the model (heuristics/relaxed.py)"
-    return make
+# The heuristics' `make`s (registry.py): the relaxed view's absence is handled there (blind).
+def hmax(model, time_limit: float | None = None):
+    return relaxed_of(model, time_limit).hmax
+
+
+def hadd(model, time_limit: float | None = None):
+    return relaxed_of(model, time_limit).hadd
+
+
+def hff(model, time_limit: float | None = None):
+    """hff, with `h.preferred()`: the preferred actions of the state last evaluated."""
+    r = relaxed_of(model, time_limit)
+    h = functools.partial(Relaxed.hff, r)
+    h.preferred = lambda: r.preferred
+    return h
+
+
+def lmcut(model, time_limit: float | None = None):
+    return relaxed_of(model, time_limit).lmcut

@@ -15,10 +15,9 @@ from .relaxed_task import RelaxedTask
 
 
 class AtomReader:
-    """A state (an int, bit i is atom i: compile.py) -> the facts that hold in it.
-    `to_dense` (set by relaxed_of for compiled dungeons' compact layouts) is not needed:
-    an imported state has one layout."""
-    to_dense = None
+    """A state (an int, bit i is atom i: pddl_io/compile.py) -> the facts that hold in it.
+    An imported state has one layout, read as it is."""
+    reads_dense = False
 
     def facts(self, state) -> list:
         out = []

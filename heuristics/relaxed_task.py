@@ -28,16 +28,17 @@ class RelaxedTask:
     chained: tuple = ()              # fired facts whose steps cost their action here (Builder.fire_effects)
 
     def state_facts(self, state) -> list:
+        """The facts of a state in the reader's layout (a dense one, for a dungeon)."""
         return self.reader.facts(state)
 
 
 @dataclass
 class StateReader:
     """The one place that reads a state's variable values and cell contents. It reads the
-    dense layout of compiler/layout.py (variables, then every mutable-layer cell);
-    `to_dense` turns a state of the model into that layout (identity while states are
-    dense; the model's `dense` once states store only changed cells). Plain data, so a
-    built view can be kept in the on-disk cache (pipeline.py)."""
+    dense layout of compiler/layout.py (variables, then every mutable-layer cell): a
+    model's state, which stores only the changed cells, is read through `model.dense`
+    (relaxed.relaxed_of). Plain data, so a built view can be kept in the on-disk cache
+    (tables.py)."""
 
     groups: list        # per group: the state indices of its variables
     bases: list         # per group: its first fact
@@ -47,7 +48,7 @@ class StateReader:
     n_values: int       # facts per cell
     n_cells: int
 
-    to_dense = None     # a class attribute, set per model (not a field: never cached)
+    reads_dense = True  # a class attribute (not a field): states go through `model.dense`
 
     @classmethod
     def of(cls, layout, groups, fact_base, strides, cell_base, n_values) -> "StateReader":
@@ -55,8 +56,6 @@ class StateReader:
                    cell_base, n_values, len(layout.layers) * layout.width * layout.depth)
 
     def facts(self, state) -> list:
-        if self.to_dense is not None:
-            state = self.to_dense(state)
         out = []
         for idxs, base, strides in zip(self.groups, self.bases, self.strides):
             f = base

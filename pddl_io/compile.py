@@ -181,13 +181,4 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),
         goal_positions=None, report=report, source=source, search_actions=tuple(range(len(actions))),
         lazy={"ground_task": lambda: task, "layer_expanders": lambda: (ns["expand"],),
-              "cost_expander": ns["cost_expander"], "pddl_files": lambda: files,
-              "relaxed_task": functools.partial(_relaxed_once, task, {})})
-
-
-def _relaxed_once(task, cache: dict, time_limit: float | None = None):
-    """The delete-relaxed view (heuristics/relaxed_pddl.py), built on first use."""
-    if "view" not in cache:
-        from ..heuristics.relaxed_pddl import relaxed_task
-        cache["view"] = relaxed_task(task)
-    return cache["view"]
+              "cost_expander": ns["cost_expander"], "pddl_files": lambda: files})

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib
 
+from .. import heuristics  # noqa: F401 - registers the heuristics' tables as model data
 from ..errors import BccError
 from .base import Budget, Result
 from .options import check_options, options_of, unavailable

@@ -30,7 +30,7 @@ import math
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result
 from ..heuristics.position import position_blind
-from ..heuristics.registry import ADMISSIBLE, HEURISTICS
+from ..heuristics.registry import HEURISTICS, make, serves
 from .layers import layered
 from .options import Option, declare, heuristic_option
 
@@ -54,20 +54,20 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     if switching and model.data("counting_wanted"):
         # The goal needs cells of the grid changed: the counting abstraction sees that (and
         # the agent's position, which it keeps); past its limits, the choices below.
-        h = HEURISTICS["counting"](model, budget.time_limit)
+        h = make("counting", model, budget.time_limit)
         if getattr(h, "fallback", None):
             h = None
         else:
             switching, used = False, "counting"
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
-        # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if there is one.
-        switching, used = False, "lmcut" if "relaxed_task" in model.lazy else "blind"
+        # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if it serves the model.
+        switching, used = False, "lmcut" if serves("lmcut", model) else "blind"
     elif switching and position_blind(model):
         # The goal does not pin the agent's position: manhattan and the pattern database
         # are 0 everywhere, so they would only slow a blind search down.
         switching, used = False, "blind"
     if h is None:
-        h = HEURISTICS[used](model)
+        h = make(used, model)
     zero = used == "blind"
     if zero and len(set(model.action_costs)) <= 1:
         return _layered(model, meter, name)
@@ -93,7 +93,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     keys, bins = _open_list([start], nodes, h, weight, packed)
     # An admissible heuristic is 0 on every goal: a state it rates above 0 skips the goal test
     # (the auto switch moves between admissible ones)
-    goal_aware = used in ADMISSIBLE
+    goal_aware = HEURISTICS[used].admissible
     get, push, pop, inf, ceil = nodes.get, heapq.heappush, heapq.heappop, math.inf, math.ceil
     expanded = generated = 0
     max_states = budget.max_states
@@ -122,7 +122,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
                                      initial_h=h0)
             if switching and expanded >= SWITCH_AFTER:
                 switching = False
-                h = HEURISTICS["pdb"](model)
+                h = make("pdb", model)
                 used = "auto (manhattan, then pdb)"
                 keys, bins = _open_list(_open_states(keys, bins, nodes, packed), nodes, h, weight, packed)
                 # no `continue`: `state` is expanded and counted, so its successors are

@@ -21,7 +21,7 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result, budget_result, extract_plan
-from ..heuristics.registry import HEURISTICS
+from ..heuristics.registry import HEURISTICS, make, serves
 from .options import Option, declare, heuristic_option
 
 BOOST = 10
@@ -56,27 +56,16 @@ class _OpenLists:
     def progress(self, h) -> None:
         if h < self.best:
             self.best, self.boost = h, BOOST
-COSTLY = {"hmax", "hadd", "hff", "lmcut"}   # heuristics evaluated lazily by default
-
-
-def preferred_of(h):
-    """A function state -> preferred actions (after h(state)), or None for heuristics without them."""
-    owner = getattr(h, "__self__", None)
-    if owner is not None and getattr(h, "__name__", "") == "hff" and hasattr(owner, "preferred"):
-        return lambda: owner.preferred
-    return None
-
-
 def auto_heuristic(model: Model) -> str:
     """gbfs's own choice: the pattern database where it sees the goal (a goal about the
     agent's position), hff where it is blind at the start (h = 0 although the goal does
-    not hold: carrying things, or a model without a position) and the model has a relaxed
-    view, else the pattern database (which falls back to manhattan)."""
-    if "relaxed_task" not in model.lazy:
+    not hold: carrying things, or a model without a position) and serves the model, else
+    the pattern database (which falls back to manhattan)."""
+    if not serves("hff", model):
         return "pdb"
     if model.data("pattern_database") is None and model.goal_positions is None:
         return "hff"
-    h0 = HEURISTICS["pdb"](model)(model.initial)
+    h0 = make("pdb", model)(model.initial)
     return "hff" if h0 == 0 and not model.is_goal(model.initial) else "pdb"
 
 
@@ -91,9 +80,10 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     meter = Meter(budget, progress)
     if heuristic == "auto":
         heuristic = auto_heuristic(model)
-    h = HEURISTICS[heuristic](model)
-    helpful = preferred_of(h) if preferred else None
-    if evaluation == "lazy" or evaluation == "auto" and heuristic in COSTLY:
+    h = make(heuristic, model)
+    # h.preferred(): the preferred actions of the state h last rated (not on a blind fallback)
+    helpful = getattr(h, "preferred", None) if preferred and HEURISTICS[heuristic].preferred else None
+    if evaluation == "lazy" or evaluation == "auto" and HEURISTICS[heuristic].costly:
         return _lazy(model, budget, meter, h, helpful, heuristic)
     start = model.initial
     parents = {start: None}

@@ -11,7 +11,7 @@ import math
 
 from ..model import Model
 from .base import Budget, Meter, Result
-from ..heuristics.registry import HEURISTICS
+from ..heuristics.registry import make
 from .options import declare, heuristic_option
 
 
@@ -23,7 +23,7 @@ class _Stop(Exception):
 @declare(heuristic_option("pdb"), optimal=True)
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", **options) -> Result:
     meter = Meter(budget, progress)
-    h = HEURISTICS["pdb" if heuristic == "auto" else heuristic](model)
+    h = make("pdb" if heuristic == "auto" else heuristic, model)
     # search successors: self-loops and failure states (unless goals) are left out there
     costs, successors, is_goal = model.action_costs, model.search_successors(), model.is_goal
     start = model.initial

@@ -15,7 +15,7 @@ import pytest
 
 from bcc.compiler import compile_dungeon
 from bcc.solvers import Budget, get_solver
-from bcc.heuristics.registry import HEURISTICS
+from bcc.heuristics.registry import make
 
 from conftest import compiled
 
@@ -103,7 +103,7 @@ def true_costs(model):
 @pytest.mark.parametrize("heuristic", ["pdb", "manhattan"])
 def test_heuristics_are_admissible_and_consistent(name, heuristic):
     model = compile_dungeon(name, prune=False)
-    h = HEURISTICS[heuristic](model)
+    h = make(heuristic, model)
     states, dist = true_costs(model)
     for s in states:
         if s in dist:
@@ -121,7 +121,7 @@ def test_pdb_admissible_on_tough_maze_samples():
     # compare h with the optimal cost found by A* from each (manhattan, an independent
     # admissible heuristic, so this does not trust the pdb it checks).
     model = compiled("tough_maze")
-    h = HEURISTICS["pdb"](model)
+    h = make("pdb", model)
     rng = random.Random(7)
     s = model.initial
     for step in range(40):

@@ -11,10 +11,11 @@ import pytest
 
 from bcc.compiler import compile_dungeon
 from bcc.heuristics import counting
+from bcc.heuristics.tables import counting_args
 from bcc.generate_rooms import generate_manipulation
 from bcc.simulate import replay
 from bcc.solvers import Budget, get_solver
-from bcc.heuristics.registry import HEURISTICS
+from bcc.heuristics.registry import make
 from test_relaxed import TINY_ROOMS, exact_distances
 
 BUDGET = Budget(time_limit=1200, max_memory_mb=6000)
@@ -54,7 +55,7 @@ def _write(tmp_path, name, text):
 def check(model, sample=None) -> int:
     """h <= the exact cost-to-go on every (sampled) reachable state, h consistent on
     each of their transitions, h = 0 on goal states; returns the start's optimal cost."""
-    h = HEURISTICS["counting"](model)
+    h = make("counting", model)
     assert not getattr(h, "fallback", None)
     order, dist = exact_distances(model)
     states = order if sample is None else order[::max(1, len(order) // sample)]
@@ -80,7 +81,7 @@ def test_corridor_distances_are_hand_derived(tmp_path):
     # The stone's cell is the one cell kept exactly; the abstraction loses nothing here,
     # so the start's abstract distance is the true 9 (derived above).
     assert len(db.exact) == 1
-    assert HEURISTICS["counting"](model)(model.initial) == 9
+    assert make("counting", model)(model.initial) == 9
     assert check(model) == 9
     assert get_solver("bfs")(model, BUDGET).cost == 9
     result = get_solver("astar")(model, BUDGET)
@@ -120,7 +121,7 @@ def test_manipulation_rooms_admissible_and_optimal(tmp_path, stones):
     assert result.heuristic == "counting" and result.cost == bfs.cost
     assert result.expanded * 20 < bfs.expanded
     assert replay(model, [(p, 1, 1) for p in result.plan]).valid
-    h = HEURISTICS["counting"](model)
+    h = make("counting", model)
     assert bfs.cost - 2 <= h(model.initial) <= bfs.cost
 
 
@@ -129,7 +130,7 @@ def test_manipulation_two_stones_consistent_on_a_sample(tmp_path):
     """Consistent on every transition of the first 40,000 states in breadth-first order,
     and 0 on goal states (with consistency, what makes it admissible)."""
     model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
-    h = HEURISTICS["counting"](model)
+    h = make("counting", model)
     successors = model.search_successors()
     seen, order = {model.initial}, [model.initial]
     for s in order:
@@ -156,7 +157,7 @@ def test_other_dungeons_stay_optimal_with_counting(model_of, name):
     bfs = get_solver("bfs")(model, BUDGET)
     result = get_solver("astar")(model, BUDGET, heuristic="counting")
     assert result.solved and result.cost == bfs.cost
-    h = HEURISTICS["counting"](model)
+    h = make("counting", model)
     assert h(model.initial) <= bfs.cost
 
 
@@ -172,7 +173,7 @@ def test_a_goal_no_abstract_state_meets_is_infinite(tmp_path):
     # Every cell at (5, y, 2) must hold a stone, the floor's bedrock too: no plan.
     goal = "forall b in block . (b.blockType == burlap_stone or b.x != 5 or b.z != 2)"
     model = compile_dungeon(_write(tmp_path, "tiny_rooms", TINY_ROOMS), goal=goal)
-    assert HEURISTICS["counting"](model)(model.initial) == float("inf")
+    assert make("counting", model)(model.initial) == float("inf")
     result = get_solver("astar")(model, BUDGET, heuristic="counting")
     assert not result.solved and result.status == "no_solution" and result.expanded == 0
 
@@ -230,10 +231,7 @@ def test_variables_are_projected_away_past_the_first_limit(tmp_path, monkeypatch
 
 def test_state_limit_gives_up(tmp_path):
     model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
-    f = model.lazy["counting_database"]
-    cl = dict(zip(f.__code__.co_freevars, [c.cell_contents for c in f.__closure__]))
-    args = (cl["layout"], cl["actions"], cl["search"], cl["goal_ir"], cl["failure_ir"], cl["reach"], cl["n_values"],
-            cl["initial"], model.apply_fns, model.is_goal, model.is_failure)
+    args = counting_args(model.data("compiled"))
     assert counting.build_or_none(*args, max_states=1000) == {"db": None}
     assert counting.build(*args, max_states=20_000).projected    # 26,568 states with every variable
     with pytest.raises(counting.TooBig):

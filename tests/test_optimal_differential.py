@@ -136,10 +136,10 @@ def test_auto_searches_blind_where_the_goal_does_not_pin_the_position(name):
     from collections import deque
 
     from bcc.heuristics.position import position_blind
-    from bcc.heuristics.registry import HEURISTICS
+    from bcc.heuristics.registry import make
     model = compile_dungeon(name)
     assert position_blind(model)
-    pdb, manhattan = HEURISTICS["pdb"](model), HEURISTICS["manhattan"](model)
+    pdb, manhattan = make("pdb", model), make("manhattan", model)
     seen, todo = {model.initial}, deque([model.initial])
     while todo and len(seen) < 3000:
         state = todo.popleft()

@@ -8,6 +8,8 @@ Domshlak 2009, so a violation is a bug). A* with LM-cut must find BFS's cost.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import heapq
 
 import pytest
@@ -94,7 +96,7 @@ def check_admissible(model, sample=None):
         hmax, lmcut = r.hmax(s), r.lmcut(s)
         assert hmax <= lmcut, (model.name, hmax, lmcut)
         if s in dist:
-            assert lmcut <= dist[s], (model.name, r.task.state_facts(s), lmcut, dist[s])
+            assert lmcut <= dist[s], (model.name, r.facts_of(s), lmcut, dist[s])
             checked += 1
         # hmax is consistent: h(s) <= c(a) + h(s') on every transition.
         if not model.is_goal(s):
@@ -149,16 +151,16 @@ def test_greedy_evaluation_modes(tmp_path, monkeypatch, evaluation):
     from bcc.heuristics import registry as heuristics
     model = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
     calls = [0]
-    make = heuristics.HEURISTICS["hff"]
+    entry = heuristics.HEURISTICS["hff"]
 
     def counted(m, *args, **kw):
-        h = make(m, *args, **kw)
+        h = entry.build(m, *args, **kw)
 
         def wrapped(state):
             calls[0] += 1
             return h(state)
         return wrapped
-    monkeypatch.setitem(heuristics.HEURISTICS, "hff", counted)
+    monkeypatch.setitem(heuristics.HEURISTICS, "hff", dataclasses.replace(entry, make=counted))
     result = get_solver("gbfs")(model, BUDGET, heuristic="hff", evaluation=evaluation)
     assert result.solved
     assert replay(model, [(p, 1, 1) for p in result.plan]).valid
@@ -232,7 +234,7 @@ def test_gbfs_auto_picks_hff_where_the_pattern_database_is_blind(tmp_path):
     database is kept. Both plans replay to the goal."""
     from bcc.heuristics import registry as heuristics
     carry = compile_dungeon(_write(tmp_path, "tiny", TINY_ROOMS))
-    assert heuristics.HEURISTICS["pdb"](carry)(carry.initial) == 0
+    assert heuristics.make("pdb", carry)(carry.initial) == 0
     for model, expected in ((carry, "hff"), (compile_dungeon("grid"), "pdb")):
         result = get_solver("gbfs")(model, BUDGET)
         assert result.solved and result.heuristic == expected
@@ -245,7 +247,7 @@ def test_relaxed_view_facts_and_goal():
     task = model.data("relaxed_task")
     assert [task.labels[g] for g in task.goal] == ["agent.x=1, agent.z=1"]
     assert ["agent.x", "agent.z"] in task.stats["groups"]
-    facts = task.state_facts(model.initial)
+    facts = task.state_facts(model.dense(model.initial))
     assert any(task.labels[f] == "agent.x=1, agent.z=3" for f in facts)
 
 
@@ -331,7 +333,7 @@ def test_incremental_exploration_matches_a_fresh_one(tmp_path):
     order = states + rng.sample(states, len(states))
     for view in (r, r.guide):
         for s in order:
-            facts = view.task.state_facts(s)
+            facts = view.facts_of(s)
             fast, _ = view.explore_add(facts, view.cost)
             slow, _, _ = view.explore(facts, view.cost, True, True)
             assert view.goal_cost(fast, True) == view.goal_cost(slow, True)

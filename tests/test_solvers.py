@@ -9,7 +9,7 @@ import pytest
 
 from bcc.simulate import replay
 from bcc.solvers import Budget, get_solver, list_solvers
-from bcc.heuristics.registry import HEURISTICS
+from bcc.heuristics.registry import make
 
 from conftest import FOUR_ROOMS_GOALS, compiled
 
@@ -70,7 +70,7 @@ def test_blind_astar_equals_bfs_cost():
 def test_manhattan_is_admissible_along_the_optimal_plan():
     # h never exceeds the true remaining cost at any state of an optimal plan.
     model = compiled("bridge")
-    h = HEURISTICS["manhattan"](model)
+    h = make("manhattan", model)
     result = get_solver("bfs")(model, BUDGET)
     r = replay(model, [(a, 1, 1) for a in result.plan])
     for i, state in enumerate(r.states):
