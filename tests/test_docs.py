@@ -11,6 +11,8 @@
   except for timings.
 - docs/add-a-solver.md is followed the same way, except that `pip install` installs into
   a temporary folder put on PYTHONPATH, so the surrounding environment is never touched.
+- docs/add-a-heuristic.md changes bcc itself: it is followed in a copy of this checkout
+  (its files are written there), which `bcc` then runs (the copy comes first on PYTHONPATH).
 - Every relative link in README.md and docs/*.md points to an existing file (and heading).
 
 The pages run in parallel, each in its own folder; the module takes about 25 s (each
@@ -24,6 +26,7 @@ import importlib.metadata
 import importlib.util
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -38,7 +41,8 @@ DOCS = ROOT / "docs"
 GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
 PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md",
-         "learning-curves.md"]
+         "learning-curves.md", "add-a-heuristic.md"]
+IN_CHECKOUT = {"add-a-heuristic.md"}   # pages that change bcc's own files: followed in a copy of the checkout
 NEEDS = {"learning-curves.md": "matplotlib"}  # pages whose commands need an optional extra: page -> the module it brings
 
 FENCE = re.compile(r"^```([^\n`]*)\n(.*?)^```[ \t]*$", re.M | re.S)
@@ -140,6 +144,9 @@ def follow(page: str, workdir: Path, echo: bool = False) -> list[str]:
     With `echo`, print each command and what it prints (to paste into a page)."""
     site = workdir / ".site"
     env = environment(site)
+    if page in IN_CHECKOUT:
+        workdir = checkout_copy(workdir / "bcc")
+        env["PYTHONPATH"] = os.pathsep.join([str(workdir.parent), env["PYTHONPATH"]])
     for step in steps_of((DOCS / page).read_text(encoding="utf-8")):
         if step.kind != "run":
             write(workdir, step)
@@ -158,6 +165,14 @@ def follow(page: str, workdir: Path, echo: bool = False) -> list[str]:
             return [f"{page}: the output of\n  " + "\n  ".join(c for c, _ in step.commands) +
                     f"\nis not what the page shows.\n--- page\n{step.output}--- printed\n{''.join(printed)}"]
     return []
+
+
+def checkout_copy(target: Path) -> Path:
+    """This checkout's package (code and data, without tests, benchmarks, docs or build
+    output) copied to `target`, a folder named `bcc`."""
+    shutil.copytree(ROOT, target, ignore=shutil.ignore_patterns(".*", "__pycache__", "*.egg-info", "tests", "bench",
+                                                                "docs", "build", "dist"))
+    return target
 
 
 def can_build_plugins() -> str | None:
@@ -268,6 +283,12 @@ def test_add_a_solver_page_works_word_for_word(followed):
     if "add-a-solver.md" not in followed:
         pytest.skip(can_build_plugins())
     problems = followed["add-a-solver.md"].result()
+    assert not problems, problems[0]
+
+
+@pytest.mark.slow   # the pages run in one module fixture, about 30 s together
+def test_add_a_heuristic_page_works_word_for_word(followed):
+    problems = followed["add-a-heuristic.md"].result()
     assert not problems, problems[0]
 
 
