@@ -1,7 +1,7 @@
 """bcc: declarative YAML domains and dungeons compiled to an OO-MDP, solved by pluggable solvers.
 
 Pipeline (one folder per step): grammar/ -> compiler/ -> model.py -> solvers/.
-The CLI (cli.py) is an edge that only translates between the shell and the library.
+The CLI (cli/) is an edge that only translates between the shell and the library.
 """
 if __package__:  # imported as bcc (or as the checkout's folder name, by pytest)
     from .errors import BccError  # noqa: E402

@@ -37,7 +37,7 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-# One BLAS thread, as the `bcc` command runs (cli.py): this script imports bcc directly,
+# One BLAS thread, as the `bcc` command runs (cli/core.py): this script imports bcc directly,
 # and a thread per core made training 4x slower on a busy machine. Set before numpy loads.
 for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_blas_threads, "1")

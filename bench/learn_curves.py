@@ -56,7 +56,7 @@ def main() -> int:
     ap.add_argument("--time-limit", type=float, default=TIME_LIMIT,
                     help=f"seconds per run; a run stopped there keeps its episodes (default {TIME_LIMIT:g})")
     args = ap.parse_args()
-    from bcc.cli import _plot_curves
+    from bcc.learning_curves import plot_curves
     from bcc.learning_curves import learning_curves
 
     out_json = HERE / "learn_curves.json"
@@ -70,7 +70,7 @@ def main() -> int:
                                time_limit=args.time_limit, progress=show)
         data.update(wall_seconds=round(time.perf_counter() - start, 2), time_limit=args.time_limit)
         png = HERE / f"learn_curves_{dungeon}.png"
-        _plot_curves(data["runs"], data["optimal_cost"],
+        plot_curves(data["runs"], data["optimal_cost"],
                      f"{dungeon}: steps per episode ({args.seeds} seeds)", str(png))
         report["dungeons"][dungeon] = data
         print(f"\n{dungeon}: optimal cost {data['optimal_cost']}, {episodes} episodes, {args.seeds} seeds, "

@@ -179,7 +179,7 @@ def test_generate_maze_then_solve(tmp_path):
 
 
 def test_the_command_runs_numpy_on_one_blas_thread_unless_told_otherwise():
-    # A BLAS thread per core made `bcc train` 4x slower on a busy machine (see cli.py).
+    # A BLAS thread per core made `bcc train` 4x slower on a busy machine (see cli/core.py).
     code = ("import os, sys\nimport bcc.cli\nimport numpy\n"
             "print(os.environ.get('OPENBLAS_NUM_THREADS'), os.environ.get('OMP_NUM_THREADS'))")
     env = {k: v for k, v in __import__("os").environ.items() if not k.endswith("_NUM_THREADS")}

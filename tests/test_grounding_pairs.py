@@ -350,7 +350,7 @@ def test_any_text_gets_a_distribution_from_every_voter(text):
 def test_evaluate_shows_progress_on_a_terminal_only(tmp_path, monkeypatch):
     """Cross-validation trains a model per fold and mode (minutes on a real corpus): on a
     terminal a line on stderr counts them; piped, stderr stays quiet."""
-    from bcc.grounding import commands
+    from bcc.cli import grounding as commands
     train = write(tmp_path / "train.jsonl", synthetic(60, 1))
     args = ("corpus", "evaluate", "--train", train, "--folds", "2", "--dungeon", "cleanup", "--from", "tasks")
     assert "models trained" not in run(*args).stderr

@@ -14,7 +14,7 @@ import textwrap
 
 import pytest
 
-from bcc.cli_shared import SOLVER_FLAGS
+from bcc.cli.shared import SOLVER_FLAGS
 from bcc.simulate import replay
 from bcc.solvers import BUILTIN, Budget, Result, get_solver, list_solvers
 from bcc.solvers.options import Option, check_options, options_of, unavailable

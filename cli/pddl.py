@@ -6,7 +6,7 @@ import sys
 
 import click
 
-from ..cli_shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option,
+from .shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option,
                           max_memory_option, print_result, progress_enabled, solver_flags, solver_request,
                           time_limit_option, within_budget)
 
@@ -31,8 +31,8 @@ def export_group():
 def export_pddl_cmd(dungeon, out_dir, max_states, time_limit, max_memory, as_json, goal):
     """Write DUNGEON as grounded STRIPS PDDL: DIR/domain.pddl and DIR/problem.pddl."""
     from ..atomic import write_text
-    from .task import build_task
-    from .writer import domain_text, problem_text
+    from ..pddl_io.task import build_task
+    from ..pddl_io.writer import domain_text, problem_text
     with within_budget(time_limit, max_memory, as_json, dungeon):
         model = compile_model(dungeon, goal)
         task = build_task(model, max_states)
@@ -85,12 +85,12 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
     if options.get("heuristic") in (None, "auto") and solver in ("gbfs", "wastar"):
         options["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
     elif solver == "astar" and options.get("heuristic") in (None, "auto") and options.get("weight", 1) == 1:
-        from .portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
+        from ..pddl_io.portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
     deadline = Deadline(budget)
     model = None
     try:
         with hard_limits(budget):
-            from .importer import import_pddl
+            from ..pddl_io.importer import import_pddl
             model = import_pddl(domain, problem)
             if output:
                 from ..atomic import check_writable

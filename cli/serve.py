@@ -6,7 +6,7 @@ import sys
 
 import click
 
-from ..cli_shared import emit_json, json_option
+from .shared import emit_json, json_option
 
 
 @click.command("serve")
@@ -32,13 +32,13 @@ def serve_cmd(host, port, workers, max_body_kb, job_memory_mb, max_time_limit, a
     """
     try:
         import uvicorn
-        from .app import Settings, create_app
+        from ..serve.app import Settings, create_app
     except ImportError as exc:
         from ..extras import missing
         raise missing("bcc serve", exc.name, "serve") from None
     settings = Settings(workers=workers or os.cpu_count() or 1, max_body_bytes=max_body_kb * 1000,
                         job_memory_mb=job_memory_mb, max_time_limit=max_time_limit)
-    from .listen import bind, url
+    from ..serve.listen import bind, url
     sock = bind(host, port)
     if as_json:
         emit_json({"url": url(sock), "port": sock.getsockname()[1], "workers": settings.workers,

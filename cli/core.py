@@ -1,4 +1,6 @@
-"""The `bcc` command: translates between the shell and the library, nothing more.
+"""The `bcc` group and its core commands (compile, solve, validate, show, list, solvers,
+generate, learn-curve); the feature commands are loaded from this package's other modules
+when asked for.
 
 Exit codes: 0 success, 1 no solution / budget exhausted / plan invalid, 2 bad input.
 Results and JSON go to stdout; errors, warnings and progress to stderr.
@@ -19,12 +21,12 @@ import click
 for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_blas_threads, "1")
 
-from .errors import BccError, ModelError
+from ..errors import BccError, ModelError
 
-from .cli_shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
+from .shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
                          print_result, progress_enabled, solver_flags, solver_request, time_limit_option, within_budget,
                          write_output)
-from .exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
+from ..exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
 
 
 class BccGroup(click.Group):
@@ -94,7 +96,7 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal, time_limit, max_mem
         model = compile_model(dungeon, goal)
         report = model.compile_report()
     if output:
-        from .model_json import model_json
+        from ..model_json import model_json
         write_output(output, json.dumps(model_json(model), indent=2) + "\n")
     if emit_python:
         write_output(emit_python, model.source)
@@ -137,8 +139,8 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
     """Solve DUNGEON: the plan on stdout (one action a line), the summary on stderr.
     Exit 0 solved, 1 no plan or a budget ran out. Options that a solver does not take
     are refused; `bcc solvers` lists each solver's."""
-    from .solvers import Budget, LEARNING, get_solver, optimal_cost
-    from .solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
+    from ..solvers import Budget, LEARNING, get_solver, optimal_cost
+    from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
     solve = get_solver(solver)
     options = solver_request(solver, solver_options)   # bad options are bad input, before anything runs
     default = Budget.default()
@@ -150,7 +152,7 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
         with hard_limits(budget):
             model = compile_model(dungeon, goal)
             if output:
-                from .atomic import check_writable
+                from ..atomic import check_writable
                 check_writable(output)   # before a long solve, not after it
             progress = progress_enabled()
             if solver in LEARNING:  # converged_episode compares with A*'s cost, found within half the budget
@@ -166,10 +168,10 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
 
 
 def _read_plan_arg(plan: str):
-    from .simulate import read_plan
+    from ..simulate import read_plan
     if plan == "-":
         return read_plan(sys.stdin.read(), "<stdin>"), "<stdin>"
-    from .errors import read_input
+    from ..errors import read_input
     return read_plan(read_input(plan, "plan"), plan), plan
 
 
@@ -183,7 +185,7 @@ def validate_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
     """Replay PLAN (a file, one action a line, or - for stdin) in DUNGEON.
 
     Exit 0 when it reaches the goal, 1 when it does not (saying at which step and why)."""
-    from .simulate import replay
+    from ..simulate import replay
     with within_budget(time_limit, max_memory, as_json, dungeon):
         model = compile_model(dungeon, goal)
         actions, path = _read_plan_arg(plan)
@@ -203,8 +205,8 @@ def validate_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
 @budget_options
 def show_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
     """Draw DUNGEON from above (rows are z, columns x), optionally with a plan's path."""
-    from .render import render
-    from .simulate import replay
+    from ..render import render
+    from ..simulate import replay
     with within_budget(time_limit, max_memory, as_json, dungeon):
         model = compile_model(dungeon, goal)
         state, path, note = model.initial, None, None
@@ -230,9 +232,9 @@ def show_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
 @json_option
 def list_cmd(as_json):
     """List the shipped dungeons and domains."""
-    from .compiler.domain import DOMAINS_DIR
-    from .compiler.dungeon import DUNGEONS_DIR, shipped_dungeons
-    from .compiler.source import load_yaml
+    from ..compiler.domain import DOMAINS_DIR
+    from ..compiler.dungeon import DUNGEONS_DIR, shipped_dungeons
+    from ..compiler.source import load_yaml
     dungeons = []
     for name in shipped_dungeons():
         data = load_yaml(DUNGEONS_DIR / f"{name}.yaml")
@@ -255,7 +257,7 @@ def list_cmd(as_json):
 def solvers_cmd(as_json):
     """List the solvers (built-in and plugins), each with its options, and say which
     cannot run here and how to get them."""
-    from .solvers import describe_solvers
+    from ..solvers import describe_solvers
     solvers = describe_solvers()
     if as_json:
         emit_json({"solvers": solvers})
@@ -287,7 +289,7 @@ def generate_group():
 @json_option
 def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_json):
     """A perfect maze (plus optional loops, stones and lava rivers), solvable by construction."""
-    from .generate import generate_maze
+    from ..generate import generate_maze
     text = generate_maze(width, depth, stones=stones, lava=lava, loops=loops, seed=seed, name=name)
     if output:
         write_output(output, text)
@@ -305,7 +307,7 @@ def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_
 @json_option
 def generate_rooms_cmd(stones, name, output, as_json):
     """Three rooms in a row; carry every stone into the blue room (a manipulation task)."""
-    from .generate_rooms import generate_manipulation
+    from ..generate_rooms import generate_manipulation
     text = generate_manipulation(stones, name=name)
     if output:
         write_output(output, text)
@@ -334,10 +336,10 @@ def generate_rooms_cmd(stones, name, output, as_json):
 def learn_curve_cmd(dungeon, learners, solvers, episodes, n_seeds, seed, workers, time_limit, output, as_json, goal):
     """Steps per episode of the learning solvers on DUNGEON: R-max with each model
     learner and Q-learning, each with --seeds seeds. Exit 1 if a run failed or ran out of time."""
-    from .learning_curves import learners_from, learning_curves, mean_curve, plot_curves
+    from ..learning_curves import learners_from, learning_curves, mean_curve, plot_curves
     names = learners_from(learners, solvers)
     if output:
-        from .extras import pyplot
+        from ..extras import pyplot
         pyplot()  # a missing matplotlib is an error before anything runs
     data = learning_curves(dungeon, goal=goal, learners=names, episodes=episodes,
                            seeds=list(range(seed, seed + n_seeds)), workers=workers, time_limit=time_limit)
@@ -362,9 +364,9 @@ def learn_curve_cmd(dungeon, learners, solvers, episodes, n_seeds, seed, workers
     sys.exit(EXIT_NO_SOLUTION if stopped else EXIT_OK)
 
 
-# Feature commands live beside their code (pddl_io/, grounding/, serve/, batch/, minecraft/);
+# The feature commands, one module each in this package (cli/pddl.py for pddl_io/, ...);
 # each exposes `COMMANDS`, a list of click commands, and imports its heavy dependencies lazily.
-FEATURE_MODULES = ["pddl_io", "grounding", "serve", "batch", "minecraft"]
+FEATURE_MODULES = ["pddl", "grounding", "serve", "batch", "minecraft"]
 
 
 def _load_feature_commands() -> bool:
@@ -372,7 +374,7 @@ def _load_feature_commands() -> bool:
     if not FEATURE_MODULES:
         return False
     import importlib
-    module = importlib.import_module(f".{FEATURE_MODULES.pop(0)}.commands", __package__)
+    module = importlib.import_module(f".{FEATURE_MODULES.pop(0)}", __package__)
     for command in module.COMMANDS:
         main.add_command(command)
     return True

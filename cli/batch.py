@@ -5,7 +5,7 @@ import sys
 
 import click
 
-from ..cli_shared import (emit_json, goal_option, json_option, max_memory_option, solver_flags, solver_request,
+from .shared import (emit_json, goal_option, json_option, max_memory_option, solver_flags, solver_request,
                           time_limit_option)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
@@ -58,11 +58,11 @@ def run_cmd(dungeons, sweep_path, solvers, seeds, backend, workers, address, tim
     A DUNGEON is a file, a shipped name, a glob ('mazes/*.yaml') or a generator spec
     ('maze:width=21,depth=21,stones=2,seed=1..200'). Rerunning the same command skips the
     runs already in --out. Exit 0 when every run has its row (solved or not)."""
-    from .dungeons import expand_dungeons
-    from .engine import run_batch
-    from .progress import ProgressBar
-    from .runs import build_runs, check_limits
-    from .sweep import Sweep, expand_setting, load_sweep, seeds_from
+    from ..batch.dungeons import expand_dungeons
+    from ..batch.engine import run_batch
+    from ..batch.progress import ProgressBar
+    from ..batch.runs import build_runs, check_limits
+    from ..batch.sweep import Sweep, expand_setting, load_sweep, seeds_from
     sweep = load_sweep(sweep_path) if sweep_path else Sweep()
     names = list(dict.fromkeys(sweep.dungeons + expand_dungeons(dungeons)))
     if not names:
@@ -100,8 +100,8 @@ def run_cmd(dungeons, sweep_path, solvers, seeds, backend, workers, address, tim
 def report_cmd(results, plot_path, as_json):
     """Summarise RESULTS per solver: solved, median/max time, expansions."""
     import os
-    from .report import plot, summarise, table
-    from .store import read_rows
+    from ..batch.report import plot, summarise, table
+    from ..batch.store import read_rows
     if not os.path.exists(results):
         raise BccError("no such results file", results)
     contents = read_rows(results)

@@ -1,6 +1,6 @@
-"""What `bcc` (cli.py) and the edge commands (*/commands.py) share: the common click
-options, JSON output, compiling a dungeon argument, progress, and printing a solver's
-`Result`. Edges import this module, never cli.py, so imports point one way.
+"""What the `bcc` commands (core.py and the feature modules beside it) share: the common
+click options, JSON output, compiling a dungeon argument, progress, and printing a
+solver's `Result`.
 """
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import sys
 
 import click
 
-from .exit_codes import EXIT_NO_SOLUTION, EXIT_OK
+from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 
 def time_limit_option(help: str = "Stop after this many seconds.", **kwargs):
     return click.option("--time-limit", type=click.FloatRange(min=0, min_open=True), metavar="SECONDS", help=help,
@@ -35,9 +35,9 @@ def within_budget(time_limit: float | None, max_memory: float | None, as_json: b
     line `where: stopped: ... ran out` on stderr (with --json also one object on stdout,
     status "budget"), exit 1. Files are written atomically, so none is left half written.
     `grace` (None: hard_limits' own) lets a search inside stop itself first, with its result."""
-    from .solvers import Budget
-    from .solvers.base import BUDGET_WORDS
-    from .solvers.limits import BudgetExceeded, hard_limits
+    from ..solvers import Budget
+    from ..solvers.base import BUDGET_WORDS
+    from ..solvers.limits import BudgetExceeded, hard_limits
     budget = Budget(time_limit=time_limit,
                     max_memory_mb=max_memory if max_memory is not None else Budget.default().max_memory_mb)
     try:
@@ -62,7 +62,7 @@ def emit_json(data) -> None:
 def compile_model(dungeon: str, goal: str | None):
     """Compile what the user named; its warnings (e.g. an unused legend character) go to
     stderr, one `file:line:col: warning: ...` line each."""
-    from .compiler import compile_dungeon
+    from ..compiler import compile_dungeon
     model = compile_dungeon(dungeon, goal=goal)
     for warning in model.report.get("warnings", ()):
         click.echo(warning, err=True)
@@ -70,7 +70,7 @@ def compile_model(dungeon: str, goal: str | None):
 
 
 def write_output(path: str, text: str) -> None:
-    from .atomic import write_text
+    from ..atomic import write_text
     write_text(path, text)
 
 
@@ -134,8 +134,8 @@ class SolverFlag(click.Option):
 
 
 def _flag_help(name: str) -> str:
-    from .solvers import get_solver, list_solvers
-    from .solvers.options import options_of
+    from ..solvers import get_solver, list_solvers
+    from ..solvers.options import options_of
     uses = []
     for solver in list_solvers():
         try:
@@ -170,8 +170,8 @@ def solver_flags(command=None, *, skip: tuple = ()):
 def solver_request(solver: str, kwargs: dict) -> dict:
     """The checked keyword options for `solver` from a command's `opt_*` and
     `extra_options` parameters (popped from `kwargs`)."""
-    from .errors import BccError
-    from .solvers.options import check_options
+    from ..errors import BccError
+    from ..solvers.options import check_options
     given = {name[4:]: kwargs.pop(name) for name in list(kwargs) if name.startswith("opt_")}
     spelled = {name: flag(name) for name in given}
     for item in kwargs.pop("extra_options", ()):

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import click
 
-from ..cli_shared import (compile_model, emit_json, goal_option, json_option, solver_flags, solver_request,
+from .shared import (compile_model, emit_json, goal_option, json_option, solver_flags, solver_request,
                           time_limit_option)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
@@ -44,7 +44,7 @@ def minecraft():
 @json_option
 def setup_cmd(as_json):
     """Install the Node packages (flying-squid server, mineflayer bot) with `npm ci`."""
-    from .install import install
+    from ..minecraft.install import install
     info = install(echo=None if as_json else lambda line: click.echo(line, err=True))
     if as_json:
         emit_json(info)
@@ -70,9 +70,9 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
     server is in offline mode, any name works). In the chat, 'learn <command>' stores what you
     did since the start as a demonstration of <command>; 'reset' puts you back at the start.
     """
-    from .bridge import VERSION, Bridge
-    from .record import host
-    from .world import WorldMap, check_supported
+    from ..minecraft.bridge import VERSION, Bridge
+    from ..minecraft.record import host
+    from ..minecraft.world import WorldMap, check_supported
     model = compile_model(dungeon, goal)
     check_supported(model)
     log_path = _log_path(port)
@@ -114,7 +114,7 @@ def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json, 
     and none of bcc's rules: the bridge checks each action with the model first.
     """
     from ..solvers import Budget, get_solver
-    from .run import run_dungeon
+    from ..minecraft.run import run_dungeon
     get_solver(solver)   # an unknown solver or option is bad input, before starting anything
     options = solver_request(solver, solver_options)
     model = compile_model(dungeon, goal)
@@ -153,9 +153,9 @@ def record_cmd(dungeon, command, port, player, output, timeout, keep_going, db, 
     grounding layer's extractor. The recording ends at the dungeon's goal, at death, or when
     the player types 'done' (or 'learn <command>', which also names the command).
     """
-    from .bridge import VERSION, Bridge
-    from .record import NobodyJoined, record, store, wait_for_player
-    from .world import WorldMap, check_supported
+    from ..minecraft.bridge import VERSION, Bridge
+    from ..minecraft.record import NobodyJoined, record, store, wait_for_player
+    from ..minecraft.world import WorldMap, check_supported
     if command is not None and not command.strip():
         raise BccError("the command is empty: give the words the demonstration carries out, or leave COMMAND out")
     model = compile_model(dungeon, None)

@@ -11,7 +11,7 @@ from collections import Counter
 
 import click
 
-from ..cli_shared import (budget_options, clear_progress, compile_model, emit_json, json_option, max_memory_option,
+from .shared import (budget_options, clear_progress, compile_model, emit_json, json_option, max_memory_option,
                           print_result, progress_enabled, time_limit_option, within_budget)
 from ..exit_codes import EXIT_NO_SOLUTION, EXIT_OK
 from ..errors import BccError
@@ -30,8 +30,8 @@ def play_cmd(dungeon, record, command_text, as_json):
 
     On a terminal keys act at once; from a pipe each line is a string of keys."""
     from ..atomic import check_writable
-    from .demonstration import extract
-    from .play import line_keys, play, tty_keys
+    from ..grounding.demonstration import extract
+    from ..grounding.play import line_keys, play, tty_keys
     model = compile_model(dungeon, None)
     if record:
         check_writable(record)   # before the session, not after it
@@ -62,7 +62,7 @@ def play_cmd(dungeon, record, command_text, as_json):
 @json_option
 def learn_cmd(dungeon, command_text, demo_path, db, time_limit, max_memory, as_json):
     """Add a (COMMAND, demonstration) pair in DUNGEON to the dataset, with its inferred task."""
-    from .learn import add_pair
+    from ..grounding.learn import add_pair
     with within_budget(time_limit, max_memory, as_json, dungeon):
         added = add_pair(dungeon, command_text, demo_path, db)
     if as_json:
@@ -86,15 +86,15 @@ def learn_cmd(dungeon, command_text, demo_path, db, time_limit, max_memory, as_j
 @json_option
 def train_cmd(db, with_corpus, pairs_paths, dungeon, output, time_limit, max_memory, as_json):
     """Retrain the grounding model on the dataset (and --corpus, --pairs); store it there."""
-    from .dataset import default_path
+    from ..grounding.dataset import default_path
     with within_budget(time_limit, max_memory, as_json, str(db or default_path())):
         _train(db, with_corpus, pairs_paths, dungeon, output, as_json)
 
 
 def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
-    from . import corpus, pairs
-    from .dataset import Dataset
-    from .learn import train
+    from ..grounding import corpus, pairs
+    from ..grounding.dataset import Dataset
+    from ..grounding.learn import train
     rows = []
     for path in pairs_paths:
         given = pairs.load(path, dungeon)
@@ -136,8 +136,8 @@ def _translation(db, model_path):
     """The model `bcc command` uses: --model FILE, else the dataset's newest, else the corpus's."""
     from pathlib import Path
 
-    from .dataset import Dataset, default_path
-    from .models import from_json, load
+    from ..grounding.dataset import Dataset, default_path
+    from ..grounding.models import from_json, load
     if model_path:
         return load(model_path), model_path
     path = Path(db) if db else default_path()
@@ -149,7 +149,7 @@ def _translation(db, model_path):
             data.close()
         if latest is not None:
             return from_json(latest, str(path)), str(path)
-    from . import corpus
+    from ..grounding import corpus
     return corpus.corpus_model(), "shipped corpus"
 
 
@@ -168,8 +168,8 @@ def command_cmd(dungeon, text, db, model_path, time_limit, max_memory, as_json):
     Exit 0 when the chosen task is solved; 1 when no task is plausible, it has no plan or
     a budget ran out."""
     from ..solvers.limits import Deadline
-    from .interpret import plan, rank
-    from .learn import space_for
+    from ..grounding.interpret import plan, rank
+    from ..grounding.learn import space_for
     if not text.strip():
         raise BccError("the command is empty")
     with within_budget(time_limit, max_memory, as_json, dungeon, grace=None) as budget:
@@ -215,7 +215,7 @@ def corpus_group():
 @json_option
 def corpus_generate_cmd(pairs, seed, workers, as_json):
     """Rebuild grounding/corpus/ (dungeons and pairs.jsonl) with a fixed seed (takes minutes)."""
-    from . import corpus
+    from ..grounding import corpus
     show = progress_enabled()
     progress = (lambda k, n: click.echo(f"\r  {k}/{n}", err=True, nl=False)) if show else None
     stats = corpus.generate(pairs, seed, workers=workers, progress=progress)
@@ -265,8 +265,8 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
         if test_path or folds or dungeon or levels or workers > 1 or shuffles > 1 or nested:
             raise BccError("--test, --folds, --dungeon, --level, --shuffles, --nested and --workers need --train FILE")
         return _evaluate_shipped(as_json)
-    from . import pairs
-    from .shuffles import summarise
+    from ..grounding import pairs
+    from ..grounding.shuffles import summarise
     if test_path and folds:
         raise BccError("give --test FILE or --folds K, not both")
     if test_path and shuffles > 1:
@@ -333,7 +333,7 @@ def _evaluate_shipped(as_json):
     """The shipped corpus: train on its training split, report accuracy on its held-out split."""
     import time
 
-    from . import corpus
+    from ..grounding import corpus
     rows = corpus.load()
     train_rows = [r for r in rows if r["split"] == "train"]
     test_rows = [r for r in rows if r["split"] == "test"]
