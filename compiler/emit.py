@@ -634,7 +634,8 @@ class Emitter:
         head = [f"def {name}(states, seen, outs):"]
         head += [f"    _a{g} = outs[{g}].append" for g in groups]
         head += ["    _k = 0", "    for s in states:"]
-        return "\n".join(head + prologue + body + ["    return _k"])
+        loop = prologue + body or ["        pass"]   # no actions: nothing to expand
+        return "\n".join(head + loop + ["    return _k"])
 
     def _test_on_t(self, node, fallback: str) -> str:
         """Condition `node` on next state `t`: inline when it reads only variables and

@@ -156,8 +156,10 @@ def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, init
     src = dungeon.domain.start
     if src is None:
         return
-    space = dict(ns)
-    exec(compile(emitter.predicate_source("start_ok", g.bool_expr(src.node, Ctx(src))), "<bcc start>", "exec"), space)
+    source = emitter.predicate_source("start_ok", g.bool_expr(src.node, Ctx(src)))
+    # the check may need a constants table no action's code made (a domain with no actions)
+    space = {**emitter.ns, **ns}
+    exec(compile(source, "<bcc start>", "exec"), space)
     if space["start_ok"](initial):
         return
     text = " ".join(src.text.split())

@@ -183,7 +183,7 @@ def domains_for(model, max_states: int = DEFAULT_MAX_STATES) -> Domains:
     while True:
         rounds += 1
         frozen = tuple(tuple(sorted(d)) for d in dom)
-        slow = sorted(cost)[n_actions // 2] * 4 + 50  # in leaves, so the rounds are deterministic
+        slow = (sorted(cost)[n_actions // 2] if cost else 0) * 4 + 50  # in leaves, so the rounds are deterministic
         for a, apply in enumerate(fns["apply"]):
             if grounded_over[a] != frozen and (full or cost[a] <= slow):
                 leaves[a] = list(explore(_guarded(apply, fns["failure"]), frozen))

@@ -137,6 +137,15 @@ def budget_result(solver: str, which: str, meter: Meter, expanded: int, generate
                                budget=which, message=f"stopped: {BUDGET_WORDS[which]} ran out"))
 
 
+def without_actions(model: Model, meter: Meter, solver: str, **fields) -> Result:
+    """A learner's result on a model with no actions (a domain may declare none): the
+    start is the only state, reached by the empty plan if it is a goal."""
+    done = model.is_goal(model.initial)
+    return meter.finish(Result(solver=solver, solved=done, status="solved" if done else "no_solution",
+                               cost=0 if done else None, stored=1, **fields,
+                               message="" if done else "no plan exists: the domain has no actions"))
+
+
 def extract_plan(model: Model, parents: dict, state: bytes) -> tuple[list[str], int]:
     """Follow parent links (state -> (previous state, action index)) back to the start."""
     actions = []

@@ -33,7 +33,7 @@ from __future__ import annotations
 import random
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result
+from .base import Budget, Meter, Result, budget_result, without_actions
 from .options import Option, check_arguments, declare
 
 CHECK_STEPS = 1024   # environment steps between budget checks
@@ -76,6 +76,9 @@ def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed
     rng = random.Random(seed)
     n_actions = len(model.action_names)
     actions = range(n_actions)
+    if not n_actions:
+        return without_actions(model, meter, "qlearning",
+                               heuristic=f"alpha={alpha} gamma={gamma} epsilon={epsilon} episodes={episodes}")
     dead_value = -1.0 / (1.0 - gamma) if gamma < 1 else -float(max_steps)
     q: dict = {}
     seen = {model.initial}

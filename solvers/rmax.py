@@ -28,7 +28,7 @@ import random
 import numpy as np
 
 from ..model import Model
-from .base import Budget, Meter, Result
+from .base import Budget, Meter, Result, without_actions
 from .model_learners import LEARNERS
 from .options import Option, check_arguments, declare
 
@@ -195,6 +195,8 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
     know = LEARNERS[learner](model, m)
     actions = list(range(len(model.action_names))) if all_actions or not model.search_actions \
         else list(model.search_actions)
+    if not actions:
+        return without_actions(model, meter, "rmax", heuristic=f"learner={learner}")
     dead_value = -1.0 / (1.0 - gamma)
     kinds = Kinds(model)
     from ..heuristics.position import manhattan

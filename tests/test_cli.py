@@ -188,3 +188,33 @@ def test_the_command_runs_numpy_on_one_blas_thread_unless_told_otherwise():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                          env={**env, "OPENBLAS_NUM_THREADS": "4"}).stdout
     assert out.split() == ["4", "1"]
+
+
+def test_a_domain_without_actions_compiles_and_solves(tmp_path):
+    """Found while measuring: a domain with no actions crashed the compiler (exit 3,
+    NameError from the generated start check: its constants table was made only when an
+    action's code needed it), then the layer expander (a loop with no body), the learners
+    and the PDDL export. Now nothing can move: a goal away from the start has no plan
+    (exit 1), one that holds at the start the plan of no steps, for every solver."""
+    import yaml
+    from bcc.compiler.domain import DOMAINS_DIR
+    domain = yaml.safe_load((DOMAINS_DIR / "minecraft.yaml").read_text())
+    domain.update(domain="still", actions={})
+    (tmp_path / "still.yaml").write_text(yaml.safe_dump(domain, sort_keys=False))
+    dungeon = ("dungeon: standstill\ndomain: still.yaml\nheight: 3\n"
+               "legend:\n  '#': [bedrock, bedrock, bedrock]\n  '.': [bedrock]\n  S: [bedrock]\n  G: [gold]\n"
+               "map: |\n  #####\n  #S.G#\n  #####\nagent: {start: S}\ngoal: agentOnBlock(agent, gold)\n")
+    path = tmp_path / "standstill.yaml"
+    path.write_text(dungeon)
+    compiled = run("compile", str(path), "--json")
+    assert compiled.exit_code == 0, compiled.output
+    assert json.loads(compiled.stdout)["grounded_actions"] == 0
+    for solver in ("bfs", "astar", "gbfs", "idastar", "rmax", "qlearning"):
+        stuck = run("solve", str(path), "--solver", solver, "--json")
+        assert stuck.exit_code == 1, stuck.output
+        assert json.loads(stuck.stdout)["status"] == "no_solution"
+        there = run("solve", str(path), "--solver", solver, "--goal", "not agentOnBlock(agent, gold)", "--json")
+        assert there.exit_code == 0, there.output
+        assert json.loads(there.stdout)["plan"] == []
+    exported = run("export", "pddl", str(path), "-o", str(tmp_path / "pddl"), "--json")
+    assert exported.exit_code == 0, exported.output
