@@ -7,8 +7,9 @@ tables from a model and makes them model data (`model.data("pattern_database")`)
 (the counting abstraction), `backward.py` (the backward search of both), and the relaxed
 family: `relaxed_task.py` (the one relaxed task type), `relaxed_view.py`,
 `relaxed_build.py`, `relaxed_eval.py`, `relaxed_last.py` (the view of a compiled
-dungeon), `relaxed_pddl.py` (of an imported PDDL task), `relaxed.py` and
-`relaxed_additive.py` (hmax, hadd, hff, LM-cut). docs/add-a-heuristic.md adds one.
+dungeon), `relaxed_pddl.py` (of an imported PDDL task), `relaxed.py` (hmax, hadd, hff,
+LM-cut) and `relaxed_explore.py` (the one exploration of the view's facts they all run).
+docs/add-a-heuristic.md adds one.
 Layer: above the back end (compiler/, pddl_io/) and the model, below the solvers.
 """
 from . import tables

@@ -4,14 +4,15 @@ The pattern is the agent's position variables plus every variable their new valu
 computed from (here: x, z and the facing, which `move_forward` reads). The abstract state
 space is the product of the pattern variables' ranges; other variables range over their
 reachable values (reachability.py), grid cells over their possible values. An abstract
-transition exists when an action's preconditions may hold; a backward Dijkstra from the
-abstract states where the goal may hold gives h = the exact abstract distance, which
-never overestimates (every real path maps to an abstract path) and is consistent.
+transition exists when an action's preconditions may hold; a backward search by cost
+(backward.py) from the abstract states where the goal may hold gives h = the exact
+abstract distance, which never overestimates (every real path maps to an abstract path)
+and is consistent.
 For a block world this is the maze distance with turns, passing mineable blocks at cost 0.
 """
 from __future__ import annotations
 
-import heapq
+import array
 import itertools
 import math
 from dataclasses import dataclass
@@ -21,6 +22,7 @@ from ..compiler.abstract import Abstract, maybe_true
 from ..compiler.reachability import Analysis
 from ..compiler.relevance import effect_reads_writes, reads
 from ..model import Model
+from .backward import backward_distances
 from .position import manhattan
 
 MAX_PATTERN_STATES = 1_000_000
@@ -96,7 +98,7 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
         return i
 
     n_states = math.prod(sizes)
-    reverse: list = [[] for _ in range(n_states)]
+    src, dst, cost = array.array("q"), array.array("q"), array.array("d")   # the abstract transitions
     goals = []
     base = dict(reach.values)
     cell, layer = an.cells(reach.written)
@@ -128,23 +130,13 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
             for nxt in itertools.product(*options):
                 there = flat(nxt)
                 if there != here:
-                    reverse[there].append((here, a.cost))
+                    src.append(here)
+                    dst.append(there)
+                    cost.append(a.cost)
                     if there not in seen:
                         seen.add(there)
                         queue.append(nxt)
-    dist = [math.inf] * n_states
-    heap = [(0, g) for g in goals]
-    for g in goals:
-        dist[g] = 0
-    heapq.heapify(heap)
-    while heap:
-        d, u = heapq.heappop(heap)
-        if d > dist[u]:
-            continue
-        for v, c in reverse[u]:
-            if d + c < dist[v]:
-                dist[v] = d + c
-                heapq.heappush(heap, (d + c, v))
+    dist = backward_distances(n_states, src, dst, cost, goals)
     return PatternDatabase(tuple(s.index for s in slots), tuple(sizes),
                            tuple(int(d) if d != math.inf else math.inf for d in dist),
                            tuple(v.label for v in pattern))

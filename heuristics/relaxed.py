@@ -10,16 +10,16 @@
   justification graph in front of the goal, add the cheapest cut operator's cost and
   discount the cut; admissible, and usually far stronger than hmax.
 
-All share one Dijkstra-like exploration over facts with per-operator counters of
-unreached preconditions. A state is turned into facts by the view's one state reader.
+All four run the one exploration over facts (relaxed_explore.py): hmax, hadd and hff
+its fast form, kept from state to state; LM-cut its plain form, then its update after
+each cut. A state is turned into facts by the view's one state reader.
 """
 from __future__ import annotations
 
 import functools
-import heapq
 import math
 
-from .relaxed_additive import Additive
+from .relaxed_explore import Exploration
 
 INF = math.inf
 
@@ -48,7 +48,7 @@ class Relaxed:
             for f in add:
                 self.achievers[f].append(i)
         self.preferred: frozenset = frozenset()
-        self.additive = None   # explore_add's structure, built on its first call
+        self._fast = self._exact = None   # the explorations (fast, exact), built on first use
         # The guiding view's steps of a count (relaxed_build.py, fire_effects) each cost their
         # action; an action's own operator in a relaxed plan is one execution of it, and
         # makes one of those steps: hff charges only the steps beyond those (_step_savings).
@@ -71,73 +71,21 @@ class Relaxed:
         self.guide = None
         self.holds = None
 
-    # ---- exploration -------------------------------------------------------------------------
-    def _seeded(self, init, costs):
-        """Fact costs, supporters and the heap at the start of an exploration: the state's
-        facts at 0, and what the operators without preconditions add at their cost."""
-        cost = [INF] * self.n_facts
-        sup = [-1] * self.n_facts
-        heap = []
-        for f in init:
-            if cost[f] != 0:
-                cost[f] = 0
-                heap.append((0, f))
-        add = self.add
-        for i in self.free:
-            c = costs[i]
-            for g in add[i]:
-                if c < cost[g]:
-                    cost[g] = c
-                    sup[g] = i
-                    heap.append((c, g))
-        heapq.heapify(heap)
-        return cost, sup, heap
+    # ---- exploration (relaxed_explore.py) ----------------------------------------------------
+    def fast(self) -> Exploration:
+        """The exploration every hmax, hadd and hff evaluation runs (shared preconditions
+        folded, counters kept from the last state), built on first use. The costs of the
+        view's facts are those any exploration gives; supporters may be its node
+        operators (>= n_ops)."""
+        if self._fast is None:
+            self._fast = Exploration(self.n_facts, self.pre, self.add, self.goal_set)
+        return self._fast
 
-    def explore(self, init, costs, additive: bool, stop_at_goal: bool):
-        """Fact costs (hmax or hadd), the supporter of each fact, and each fired operator's
-        last-reached (for hmax: costliest) precondition."""
-        cost, sup, heap = self._seeded(init, costs)
-        unsat = self.n_pre[:]
-        opv = [0] * self.n_ops
-        pcf = [-1] * self.n_ops
-        pre_of, add = self.pre_of, self.add
-        goals_left = len(self.goal_set) if stop_at_goal else -1
-        goal_set = self.goal_set
-        done = bytearray(self.n_facts)
-        pop, push = heapq.heappop, heapq.heappush
-        while heap:
-            c, f = pop(heap)
-            if done[f]:
-                continue
-            done[f] = 1
-            if stop_at_goal and f in goal_set:
-                goals_left -= 1
-                if goals_left == 0:
-                    break
-            for i in pre_of[f]:
-                u = unsat[i] - 1
-                unsat[i] = u
-                if additive:
-                    opv[i] += c
-                elif c > opv[i]:
-                    opv[i] = c
-                if u == 0:
-                    pcf[i] = f
-                    v = opv[i] + costs[i]
-                    for g in add[i]:
-                        if v < cost[g]:
-                            cost[g] = v
-                            sup[g] = i
-                            push(heap, (v, g))
-        return cost, sup, pcf
-
-    def explore_add(self, init, costs):
-        """`explore` for hadd and hff (additive, stopping at the goal): the loop every hff
-        evaluation runs, in its cheaper form (relaxed_additive.py). The costs of the view's
-        facts are those `explore` gives; supporters may be its node operators (>= n_ops)."""
-        if self.additive is None:
-            self.additive = Additive(self.n_facts, self.pre, self.add, self.goal_set)
-        return self.additive.explore(init, costs)
+    def exact(self) -> Exploration:
+        """The plain exploration LM-cut runs (every fact in order, its cuts' order)."""
+        if self._exact is None:
+            self._exact = Exploration(self.n_facts, self.pre, self.add, self.goal_set, share=False, incremental=False)
+        return self._exact
 
     def goal_cost(self, cost, additive: bool):
         if self.goal is None:
@@ -149,7 +97,7 @@ class Relaxed:
 
     # ---- heuristics ---------------------------------------------------------------------------
     def hmax(self, state) -> float:
-        cost, _, _ = self.explore(self.facts_of(state), self.cost, False, True)
+        cost, _, _ = self.fast().explore(self.facts_of(state), self.cost, additive=False)
         return self.goal_cost(cost, False)
 
     def hadd(self, state) -> float:
@@ -161,7 +109,7 @@ class Relaxed:
             # miss a last action the plain view has, never declare a dead end for it.
         if self.holds is not None and self.holds(state):
             return 0
-        cost, _ = self.explore_add(self.facts_of(state), self.cost)
+        cost, _, _ = self.fast().explore(self.facts_of(state), self.cost)
         return self.goal_cost(cost, True)
 
     def hff(self, state) -> float:
@@ -175,12 +123,12 @@ class Relaxed:
         if self.holds is not None and self.holds(state):
             self.preferred = frozenset()
             return 0
-        cost, sup = self.explore_add(self.facts_of(state), self.cost)
+        cost, sup, _ = self.fast().explore(self.facts_of(state), self.cost)
         if self.goal is None or any(cost[g] == INF for g in self.goal):
             self.preferred = frozenset()
             return INF
         plan, stack, seen = set(), [g for g in self.goal if cost[g] > 0], set()
-        pre = self.additive.pre   # with the node operators that stand for shared preconditions
+        pre = self.fast().pre   # with the node operators that stand for shared preconditions
         while stack:
             f = stack.pop()
             if f in seen:
@@ -238,7 +186,8 @@ class Relaxed:
         goal, pre, add, pre_of, achievers = self.goal, self.pre, self.add, self.pre_of, self.achievers
         init_set = set(init)
         total = 0
-        cost, _, pcf = self.explore(init, costs, False, False)
+        exploration = self.exact()
+        cost, _, pcf = exploration.explore(init, costs, additive=False, stop_at_goal=False)
         while True:
             gmax = max(goal, key=cost.__getitem__)
             if cost[gmax] == INF:
@@ -294,37 +243,7 @@ class Relaxed:
             total += m
             for i in cut:
                 costs[i] -= m
-            self._decrease(cut, costs, cost, pcf)
-
-    def _decrease(self, cut, costs, cost, pcf) -> None:
-        """hmax after the cut's operators got cheaper (Fast Downward's incremental
-        exploration): fact costs only fall, so a Dijkstra from the facts the cut adds,
-        re-choosing an operator's costliest precondition when that one fell, gives the
-        hmax a fresh exploration would (up to ties)."""
-        pre, add, pre_of = self.pre, self.add, self.pre_of
-        heap = []
-        for i in cut:
-            v = (cost[pcf[i]] if pcf[i] >= 0 else 0) + costs[i]
-            for g in add[i]:
-                if v < cost[g]:
-                    cost[g] = v
-                    heap.append((v, g))
-        heapq.heapify(heap)
-        pop, push = heapq.heappop, heapq.heappush
-        while heap:
-            c, f = pop(heap)
-            if c > cost[f]:
-                continue
-            for i in pre_of[f]:
-                if pcf[i] != f:
-                    continue   # not the costliest precondition (or never applicable): unchanged
-                p = max(pre[i], key=cost.__getitem__)
-                pcf[i] = p
-                v = cost[p] + costs[i]
-                for g in add[i]:
-                    if v < cost[g]:
-                        cost[g] = v
-                        push(heap, (v, g))
+            exploration.lower(cut, costs, cost, pcf)
 
 
 def relaxed_of(model, time_limit: float | None = None) -> Relaxed | None:

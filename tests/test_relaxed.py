@@ -313,10 +313,10 @@ def test_the_relaxed_view_is_built_once_and_cached(tmp_path, monkeypatch):
 
 
 def test_incremental_exploration_matches_a_fresh_one(tmp_path):
-    """explore_add keeps its operator counters from the last state it saw and moves them by
-    the facts that changed: on states visited in a scrambled order (far jumps, repeats)
-    its hadd costs of the goal facts must equal those of the plain exploration, which
-    starts from nothing each time."""
+    """The fast exploration keeps its operator counters from the last state it saw and
+    moves them by the facts that changed: on states visited in a scrambled order (far
+    jumps, repeats) its hadd and hmax costs of the goal facts must equal those of the
+    plain exploration (LM-cut's), which starts from nothing each time."""
     import random
     model = compile_dungeon(_write(tmp_path, "rooms2", generate_manipulation(2)))
     r = relaxed_of(model)
@@ -334,10 +334,11 @@ def test_incremental_exploration_matches_a_fresh_one(tmp_path):
     for view in (r, r.guide):
         for s in order:
             facts = view.facts_of(s)
-            fast, _ = view.explore_add(facts, view.cost)
-            slow, _, _ = view.explore(facts, view.cost, True, True)
-            assert view.goal_cost(fast, True) == view.goal_cost(slow, True)
-            assert all(fast[g] == slow[g] for g in view.goal)
+            for additive in (True, False):
+                fast, _, _ = view.fast().explore(facts, view.cost, additive)
+                slow, _, _ = view.exact().explore(facts, view.cost, additive)
+                assert view.goal_cost(fast, additive) == view.goal_cost(slow, additive)
+                assert all(fast[g] == slow[g] for g in view.goal)
 
 
 def test_a_build_stopped_by_its_time_limit_is_not_cached(tmp_path, monkeypatch):

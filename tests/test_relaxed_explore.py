@@ -1,8 +1,8 @@
-"""The additive exploration behind hadd and hff (heuristics/relaxed_additive.py): shared
-preconditions folded into conjunction facts, counters kept from the last state, costs
-queued in buckets. None of that may change a fact's cost. The reference here is hadd
-computed the plainest way: a Bellman-Ford fixpoint over the operators, from nothing,
-for every state."""
+"""The one exploration behind hmax, hadd, hff and LM-cut (heuristics/relaxed_explore.py):
+shared preconditions folded into conjunction facts, counters kept from the last state,
+costs queued in buckets. None of that may change a fact's cost. The reference here is
+hadd (and hmax) computed the plainest way: a Bellman-Ford fixpoint over the operators,
+from nothing, for every state."""
 from __future__ import annotations
 
 import math
@@ -10,12 +10,12 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bcc.heuristics.relaxed_additive import MIN_SHARE, Additive
+from bcc.heuristics.relaxed_explore import MIN_SHARE, Exploration
 
 INF = math.inf
 
 
-def hadd_fixpoint(n_facts, pre, add, costs, state):
+def fixpoint(n_facts, pre, add, costs, state, additive=True):
     cost = [INF] * n_facts
     for f in state:
         cost[f] = 0
@@ -23,7 +23,7 @@ def hadd_fixpoint(n_facts, pre, add, costs, state):
     while changed:
         changed = False
         for p, a, c in zip(pre, add, costs):
-            v = sum(cost[f] for f in p) + c
+            v = (sum if additive else lambda xs: max(xs, default=0))([cost[f] for f in p]) + c
             for g in a:
                 if v < cost[g]:
                     cost[g] = v
@@ -51,23 +51,33 @@ def tasks(draw):
 
 
 @settings(max_examples=150, deadline=None)
-@given(tasks())
-def test_costs_equal_a_plain_fixpoint(task):
+@given(tasks(), st.booleans())
+def test_costs_equal_a_plain_fixpoint(task, additive):
     """On every state of a sequence (the counters carried from one to the next), each goal
-    fact's cost, and each fact's below the costliest goal fact (the exploration stops
-    once all goal facts are reached), equals the fixpoint's."""
+    fact's cost (hadd, or hmax), and each fact's below the costliest goal fact (the
+    exploration stops once all goal facts are reached), equals the fixpoint's, in the
+    fast form (shared preconditions, kept counters) and in the plain one; run to the end,
+    the plain form gives every fact's."""
     n, pre, add, costs, goal, states = task
-    a = Additive(n, pre, add, goal)
+    fast = Exploration(n, pre, add, goal)
+    plain = Exploration(n, pre, add, goal, share=False, incremental=False)
     for state in states:
-        cost, sup = a.explore(state, costs)
-        ref = hadd_fixpoint(n, pre, add, costs, state)
-        assert [cost[g] for g in goal] == [ref[g] for g in goal]
+        ref = fixpoint(n, pre, add, costs, state, additive)
         top = max(ref[g] for g in goal)
-        assert all(cost[f] == ref[f] for f in range(n) if ref[f] < top)
-        # A supporter chain ends in the state; a fact's supporter adds it.
-        for f in range(n):
-            if cost[f] not in (0, INF):
-                assert f in a.add[sup[f]]
+        for a in (fast, plain):
+            cost, sup, pcf = a.explore(state, costs, additive)
+            assert [cost[g] for g in goal] == [ref[g] for g in goal]
+            assert all(cost[f] == ref[f] for f in range(n) if ref[f] < top)
+            # A supporter chain ends in the state; a fact's supporter adds it.
+            for f in range(n):
+                if cost[f] not in (0, INF):
+                    assert f in a.add[sup[f]]
+        cost, _, pcf = plain.explore(state, costs, additive, stop_at_goal=False)
+        assert cost[:n] == ref
+        if not additive:   # each fired operator's pcf is a costliest precondition of it
+            for i, p in enumerate(pre):
+                if p and all(cost[f] < INF for f in p):
+                    assert pcf[i] in p and cost[pcf[i]] == max(cost[f] for f in p)
 
 
 def test_shared_preconditions_become_one_fact():
@@ -83,10 +93,10 @@ def test_shared_preconditions_become_one_fact():
     pre = [[a_]] + [[a_, b_, c_, d[i]] for i in range(k)]
     add = [[b_]] + [[x[i]] for i in range(k)]
     costs = [2] + [1] * k
-    ad = Additive(n, pre, add, x)
+    ad = Exploration(n, pre, add, x)
     assert ad.n_all == n + 2                       # a∧b, (a∧b)∧c
     assert all(len(p) == 2 for p in ad.pre[1:k + 1])   # the node and d_i
-    cost, _ = ad.explore([a_, c_] + d, costs)
+    cost, _, _ = ad.explore([a_, c_] + d, costs)
     assert [cost[f] for f in x] == [3] * k
-    cost, _ = ad.explore([a_, b_, c_] + d[:1], costs)   # b now holds: the nodes count as held
+    cost, _, _ = ad.explore([a_, b_, c_] + d[:1], costs)   # b now holds: the nodes count as held
     assert cost[x[0]] == 1 and cost[x[1]] == INF
