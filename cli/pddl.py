@@ -12,6 +12,12 @@ from .shared import (budget_options, clear_progress, compile_model, emit_json, g
 
 
 SEARCH_SHARE = 0.97   # of the time left after importing: the rest frees the search's tables
+# Steps (candidate atoms joined, objects of quantified variables) grounding may take under
+# --grounding auto before the task is searched lifted instead (about 4 s of CPU). Every
+# test task grounds in a few hundred (gripper 33, sokoban 221); a world of blocks with
+# inventory counts (MinePlanner's tasks) needs far more.
+MAX_GROUND_WORK = 600_000
+OPTIMAL_SOLVERS = ("astar", "bfs", "idastar")   # on a lifted task: a search by cost (with weight 1)
 
 
 @click.group("export")
@@ -67,13 +73,19 @@ def import_group():
 @max_memory_option()
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True),
               help="Write the plan to FILE, one action a line (atomically).")
+@click.option("--grounding", type=click.Choice(["auto", "full", "lifted"]), default="auto", show_default=True,
+              help="full: ground the task; lifted: search it without grounding (joins in each state); "
+                   "auto: ground unless that takes too long, else lifted.")
 @json_option
 @solver_flags
-def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory, output, as_json, **solver_options):
+def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory, output, grounding, as_json,
+                    **solver_options):
     """Compile a PDDL DOMAIN + PROBLEM with bcc's own front-end and solve it.
 
     The plan is printed in PDDL form, one `(action arg ...)` a line; its cost is the sum
-    of the actions' costs (`:action-costs`)."""
+    of the actions' costs (`:action-costs`). A task too big to ground (--grounding auto)
+    is searched lifted: a solver that is optimal searches by cost, any other runs
+    best-first width search (docs/pddl.md)."""
     from ..atomic import write_text
     from ..solvers import Budget, get_solver
     from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
@@ -88,18 +100,33 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
         from ..pddl_io.portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
     deadline = Deadline(budget)
     model = None
+    lifted = None
     try:
         with hard_limits(budget):
+            from ..pddl_io.ground import TooBig
             from ..pddl_io.importer import import_pddl
-            model = import_pddl(domain, problem)
+            if grounding == "lifted":
+                from ..pddl_io.lifted import read_task
+                lifted = read_task(domain, problem)
+            else:
+                try:
+                    model = import_pddl(domain, problem, max_work=MAX_GROUND_WORK if grounding == "auto" else None)
+                except TooBig as exc:
+                    lifted = exc.task
             if output:
                 from ..atomic import check_writable
                 check_writable(output)
             progress = progress_enabled()
             # The search stops a little early: freeing millions of states when it returns takes
             # time too, and the hard timer would otherwise drop its result (and counters).
-            result = _without_cycle_collector(solve, model, deadline.remaining(SEARCH_SHARE), progress=progress,
-                                              **options)
+            if lifted is not None:
+                from ..pddl_io.lifted_search import solve as lifted_solve
+                optimal = solver in OPTIMAL_SOLVERS and options.get("weight", 1) == 1
+                result = _without_cycle_collector(lifted_solve, *lifted, deadline.remaining(SEARCH_SHARE),
+                                                  progress=progress, optimal=optimal, solver=solver)
+            else:
+                result = _without_cycle_collector(solve, model, deadline.remaining(SEARCH_SHARE),
+                                                  progress=progress, **options)
             clear_progress(progress)
     except BudgetExceeded as exc:
         result = exceeded_result(solver, exc.which, deadline)
@@ -107,10 +134,16 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
         write_text(output, "".join(a + "\n" for a in result.plan))
     report = model.report if model is not None else {}
     name = model.name if model is not None else problem
+    if lifted is not None:
+        name = lifted[1].name
+        sys.exit(print_result(result, name, problem, as_json,
+                              {"problem": name, "atoms": None, "grounded_actions": None,
+                               "action_costs": lifted[1].metric, "lifted": True},
+                              details="; searched lifted"))
     sys.exit(print_result(result, name, problem, as_json,
                           {"problem": name, "atoms": report.get("atoms"),
                            "grounded_actions": report.get("grounded_actions"),
-                           "action_costs": report.get("action_costs")},
+                           "action_costs": report.get("action_costs"), "lifted": False},
                           details=f"; {report.get('grounded_actions')} grounded actions, {report.get('atoms')} atoms"))
 
 

@@ -20,6 +20,7 @@ The result is a `GroundTask` over atom numbers; compile.py turns it into bcc's I
 """
 from __future__ import annotations
 
+import functools
 import itertools
 from collections import defaultdict
 from dataclasses import dataclass, field
@@ -72,10 +73,17 @@ def _is_var(t: str) -> bool:
     return t[0] == "?"
 
 
+class TooBig(Exception):
+    """Grounding would take more than its work limit (`ground(max_work=...)`): the caller
+    searches the lifted task instead (lifted_search.py)."""
+
+
 class Grounder:
-    def __init__(self, dom: Domain, prob: Problem, max_actions: int | None = None):
+    def __init__(self, dom: Domain, prob: Problem, max_actions: int | None = None, max_work: int | None = None):
         self.dom, self.prob = dom, prob
         self.max_actions = max_actions
+        self.max_work = max_work
+        self.work = 0
         self.fluent_preds = {e.pred for a in dom.actions for e in a.effects}
         self._typed: dict = {}
         self.object_types = prob.objects
@@ -192,6 +200,7 @@ class Grounder:
                     got = index.get((pred, p, val), ())
                     if len(got) < len(cands):
                         cands = got
+            self.spend(len(cands))
             done2 = done | {best}
             for fact_args in list(cands):
                 env2 = unify(rule, args, fact_args, env)
@@ -234,6 +243,12 @@ class Grounder:
                     complete(rule, env, frozenset({k}))
         return reached, bindings
 
+    def spend(self, work: int) -> None:
+        """Count `work` (candidate atoms joined, bindings of quantified variables) against max_work."""
+        self.work += work
+        if self.max_work is not None and self.work > self.max_work:
+            raise TooBig(f"grounding needs more than {self.max_work:,} steps")
+
     def _fits(self, obj: str, types: frozenset) -> bool:
         return obj in self._fit_set(types)
 
@@ -245,8 +260,10 @@ class Grounder:
         return got
 
 
-def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance: bool = True) -> GroundTask:
-    g = Grounder(dom, prob, max_actions)
+def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance: bool = True,
+           max_work: int | None = None) -> GroundTask:
+    """The ground task; with `max_work`, TooBig when grounding would take more steps than that."""
+    g = Grounder(dom, prob, max_actions, max_work)
     reached, bindings = g.explore()
     init = prob.init
     use_costs = prob.metric
@@ -301,6 +318,8 @@ def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance
             return _junction(kind, [fold(s, env) for s in f[1]])
         if kind in ("exists", "forall"):
             parts = []
+            sizes = [len(g.objects_of(t)) for _, t in f[1]]
+            g.spend(functools.reduce(lambda x, y: x * y, sizes, 1))
             for combo in itertools.product(*(g.objects_of(t) for _, t in f[1])):
                 env2 = dict(env)
                 env2.update(zip((v for v, _ in f[1]), combo))

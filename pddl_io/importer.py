@@ -13,15 +13,21 @@ import time
 from pathlib import Path
 
 
-def import_pddl(domain: str, problem: str, max_actions: int | None = None):
-    """Parse, ground and compile DOMAIN + PROBLEM into a `bcc.model.Model`."""
+def import_pddl(domain: str, problem: str, max_actions: int | None = None, max_work: int | None = None):
+    """Parse, ground and compile DOMAIN + PROBLEM into a `bcc.model.Model`. With
+    `max_work`, a task whose grounding would take more steps raises ground.TooBig, with
+    the read task as its `task` (domain, problem): search it lifted (lifted_search.py)."""
     from .compile import to_model
-    from .ground import ground
+    from .ground import TooBig, ground
     from .lifted import read_task
     start = time.perf_counter()
     dom, prob = read_task(domain, problem)
     parsed = time.perf_counter()
-    task = ground(dom, prob, max_actions)
+    try:
+        task = ground(dom, prob, max_actions, max_work=max_work)
+    except TooBig as exc:
+        exc.task = (dom, prob)
+        raise
     grounded = time.perf_counter()
     report = {"dungeon": prob.name, "domain": "pddl", "pddl_domain": dom.name, **task.stats,
               "atoms": len(task.atoms), "grounded_actions": len(task.actions),   # after pruning
