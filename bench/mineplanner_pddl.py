@@ -53,7 +53,7 @@ TASKS = ["Bridge", "Build_Cabin", "Build_Cross", "Build_Shape", "Build_Wall", "B
          "Pickup_Diamond", "Pickup_and_Place", "Place_Wood"]
 LEVELS = ["Easy", "Medium", "Hard"]
 VALIDATE_SECONDS = 300
-WALL_FACTOR = 3
+WALL_FACTOR = 6      # the wall-clock cap, in CPU limits (a shared machine runs a process at a fraction of a core)
 GOAL_ACTION = "checkgoal"
 # Words of PDDL itself: never renamed.
 RESERVED = {"define", "domain", "problem", "and", "or", "not", "imply", "exists", "forall", "when", "either",
@@ -297,9 +297,10 @@ def validate(domain: str, problem: str, plan: list) -> str:
 def human_length(data: Path, task: str, level: str) -> int | None:
     path = data / "data" / "human-solutions" / task / f"{task}_{level}.json"
     try:
-        return len(json.loads(path.read_text()))
+        steps = json.loads(path.read_text())
     except (OSError, ValueError):
         return None
+    return sum(1 for s in steps if s.get("action") != GOAL_ACTION)
 
 
 def run_task(task: str, level: str, data: Path, work: Path, limit: float, fd: bool) -> dict | None:
@@ -318,6 +319,7 @@ def run_task(task: str, level: str, data: Path, work: Path, limit: float, fd: bo
     if ren.get("solved"):
         mapped = ["(" + " ".join(back.get(w, w) for w in a.strip("()").split()) + ")" for a in ren["plan"]]
         ren["same_plan"] = mapped == bcc.get("plan")
+        ren["length"] = steps_of(mapped)
         ren["validation"] = validate(p["renamed_domain"], p["renamed_problem"], ren["plan"])
     row["bcc"] = bcc
     row["bcc_renamed"] = ren

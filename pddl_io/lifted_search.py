@@ -22,7 +22,8 @@ import itertools
 from ..solvers.base import Budget, Meter, Result, budget_result
 from .lifted import TRUE, Domain, Problem
 from .lifted_joins import JoinCompiler
-from .lifted_states import LiftedTask, conjuncts, free_vars, substitute
+from .lifted_landmarks import landmarks
+from .lifted_states import LiftedTask
 
 
 WIDTH = 2     # novelty judged on single atoms (1) or also on pairs of atoms of one object (2)
@@ -116,29 +117,6 @@ class Successors:
         return s.symmetric_difference(flips) if flips else None
 
 
-def landmarks(task: LiftedTask) -> list:
-    """Ground formulas every plan must make true (see the module docstring)."""
-    goal = task.prob.goal
-    out = []
-    for g in conjuncts(goal):
-        out.append(g)
-        if g[0] != "atom" or g[1] not in task.fluent or task.holds_atom(frozenset(), g[1], g[2]):
-            continue
-        achievers = [(a, e) for a in task.dom.actions for e in a.effects if e.add and e.pred == g[1]]
-        if len(achievers) != 1:
-            continue
-        a, e = achievers[0]
-        if e.params or e.cond != TRUE or {v for v, _ in a.params} - set(e.args):
-            continue
-        env = {}
-        for t, o in zip(e.args, g[2]):
-            if env.setdefault(t, o) != o if t.startswith("?") else t != o:
-                break
-        else:
-            out.extend(c for c in conjuncts(substitute(a.pre, env)) if not free_vars(c))
-    return out
-
-
 def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bool = False,
           solver: str = "gbfs") -> Result:
     """BFWS (see the module docstring), or with `optimal` a search by cost (uniform cost,
@@ -146,13 +124,17 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
     first plan is a cheapest one. Both use the symmetry rule, which keeps costs."""
     task = LiftedTask(dom, prob)
     marks = [] if optimal else landmarks(task)
-    succ = Successors(task, [prob.goal, *marks])
-    goal_test, *mark_tests = succ.tests
+    succ = Successors(task, [prob.goal, *(m for m, _ in marks), *(n for _, ns in marks for n in ns)])
+    goal_test, *tests = succ.tests
+    mark_tests = []
+    rest = iter(tests[len(marks):])
+    for k, (_, ns) in enumerate(marks):
+        mark_tests.append((tests[k], [next(rest) for _ in ns]))
     heuristic = "blind" if optimal else "bfws-landmarks"
 
     def h(s) -> int:
         succ.begin(s)
-        return sum(1 for m in mark_tests if not m(s))
+        return sum(1 + sum(1 for n in ns if not n(s)) for m, ns in mark_tests if not m(s))
 
     meter = Meter(budget, progress)
     start = frozenset()

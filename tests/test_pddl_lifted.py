@@ -15,7 +15,8 @@ from bcc.pddl_io.ground import TooBig, ground
 from bcc.pddl_io.importer import import_pddl
 from bcc.pddl_io.lifted import read_task
 from bcc.pddl_io.lifted_joins import JoinCompiler
-from bcc.pddl_io.lifted_search import Successors, landmarks, solve
+from bcc.pddl_io.lifted_landmarks import landmarks
+from bcc.pddl_io.lifted_search import Successors, solve
 from bcc.pddl_io.lifted_states import LiftedTask
 from bcc.solvers import Budget, get_solver
 
@@ -140,7 +141,9 @@ def test_landmarks_include_the_precondition_of_the_only_achiever(tmp_path):
     problem.write_text("(define (problem p) (:domain d) (:init) (:goal (done)))")
     dom, prob = read_task(str(domain), str(problem))
     marks = landmarks(LiftedTask(dom, prob))
-    assert marks == [("atom", "done", ()), ("atom", "a", ()), ("atom", "b", ())]
+    # (done) has one achiever, finish: its conjuncts (a) and (b) are landmarks; (b)'s only
+    # achiever mb needs (a) first; (a)'s achiever ma needs nothing
+    assert marks == [(("atom", "done", ()), []), (("atom", "a", ()), []), (("atom", "b", ()), [("atom", "a", ())])]
 
 
 def test_grounding_stops_at_its_work_limit():
