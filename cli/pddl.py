@@ -163,3 +163,12 @@ def _without_cycle_collector(solve, *args, **kwargs):
 
 
 COMMANDS = [export_group, import_group]
+
+
+def _add_mineplanner():
+    """`bcc import mineplanner` (cli/mineplanner.py, for the mineplanner/ edge) joins the group."""
+    from .mineplanner import import_mineplanner_cmd
+    import_group.add_command(import_mineplanner_cmd)
+
+
+_add_mineplanner()

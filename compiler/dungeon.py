@@ -12,6 +12,7 @@ from pathlib import Path
 
 from ..errors import BccError
 from .domain import Domain, Expr, _condition, is_file, load_domain, resolve_domain_path
+from .blocks import parse_blocks, place_blocks
 from .limits import MAX_GRID_CELLS, MAX_REF_LENGTH, shorten
 from .names import check_name, check_text, name_from_stem
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest
@@ -20,7 +21,7 @@ DUNGEONS_DIR = Path(__file__).resolve().parent.parent / "dungeons"
 FACINGS_KEYS = ("facing", "looking", "selected")
 # Spec section 5; a domain may add lists of named objects (its `dungeon.lists`).
 DUNGEON_KEYS = {"dungeon", "domain", "description", "height", "legend", "map", "agent", "inventory", "rooms",
-                "goal", "extends"}
+                "goal", "extends", "width", "depth", "blocks"}
 
 
 @dataclass
@@ -100,7 +101,9 @@ def _read_with_extends(path: Path, seen: tuple = ()) -> YMap:
 def load_dungeon(ref: str | Path, domain: Domain | None = None) -> Dungeon:
     path = resolve_dungeon_path(ref)
     data = _read_with_extends(path)
-    check_keys(data, set(data) | DUNGEON_KEYS, {"domain", "height", "legend", "map", "agent"}, "a dungeon")
+    # A world is a map (with its legend), or a size and `blocks` listed by position, or both.
+    shape = {"legend", "map"} if "map" in data or "blocks" not in data else {"width", "depth"}
+    check_keys(data, set(data) | DUNGEON_KEYS, {"domain", "height", "agent"} | shape, "a dungeon")
     if domain is None:
         dref = data["domain"]
         try:
@@ -139,12 +142,20 @@ class _Builder:
             raise error_at(self.binding, "grid", "the grid class's value attribute must have an enumerated type")
         self.venum = d.enums[vtype]
         self.default_index = self.venum.index(gclass.attrs[value_attrs[0]].default)
-        legend = self.legend()
-        rows, map_origin = self.rows(legend)
-        depth, width = len(rows), len(rows[0])
+        if "map" in data:
+            for key in ("width", "depth"):
+                if key in data:
+                    raise error_at(data, key, f"`{key}` is given by the map; give it only without `map`", on_key=True)
+            legend = self.legend()
+            rows, map_origin = self.rows(legend)
+            depth, width = len(rows), len(rows[0])
+        else:
+            legend, rows, map_origin = {}, [], None
+            width, depth = (self.size(key) for key in ("width", "depth"))
         if width * depth * height > MAX_GRID_CELLS:
-            raise error_at(data, "map", f"the dungeon has {width * depth * height:,} cells ({width} x {depth} "
-                                        f"x {height}); at most {MAX_GRID_CELLS:,}")
+            raise error_at(data, "map" if "map" in data else "width",
+                           f"the dungeon has {width * depth * height:,} cells ({width} x {depth} "
+                           f"x {height}); at most {MAX_GRID_CELLS:,}")
         grid = bytearray([self.default_index]) * (height * depth * width)
         for z, row in enumerate(rows):
             for x, ch in enumerate(row):
@@ -153,6 +164,9 @@ class _Builder:
                     raise error_at(data["legend"], ch, f"the column {ch!r} has {len(column)} blocks but `height` is {height}")
                 for y, value in enumerate(column):
                     grid[(y * depth + z) * width + x] = value
+        if "blocks" in data:
+            where = origin(data, "blocks")
+            place_blocks(grid, parse_blocks(data["blocks"], where, self.venum.values), width, depth, height, where)
         if "dungeon" in data:
             name = check_name(data, "dungeon", data["dungeon"], "the dungeon name")
         else:
@@ -163,13 +177,20 @@ class _Builder:
                           str(data.get("description", "")).strip(), d, width, depth, height,
                           gclass.name, bytes(grid), {})
         dungeon.legend_columns = legend
-        self.unused_legend(dungeon, rows)
+        if rows:
+            self.unused_legend(dungeon, rows)
         self.agent(dungeon, rows, legend, map_origin)
         self.inventory(dungeon)
         self.rooms(dungeon)
         if "goal" in data:
             dungeon.goal = _condition(data, "goal")
         return dungeon
+
+    def size(self, key: str) -> int:
+        value = self.data[key]
+        if not isinstance(value, int) or isinstance(value, bool) or not 1 <= value <= 4096:
+            raise error_at(self.data, key, f"`{key}` must be a whole number of cells between 1 and 4096")
+        return value
 
     def legend(self) -> dict[str, list[int]]:
         legend = self.data["legend"]
@@ -230,6 +251,8 @@ class _Builder:
             raise error_at(self.binding, "agent", f"class {acls.name!r} needs `position: [x, y, z]`")
         values = {a: adef.default for a, adef in acls.attrs.items()}
         start = agent["start"]
+        if isinstance(start, str) and not rows:
+            raise error_at(agent, "start", "without a `map`, the start is a position [x, y, z]")
         if isinstance(start, str):
             hits = [(x, z) for z, row in enumerate(rows) for x, ch in enumerate(row) if ch == start]
             if len(start) != 1 or not hits:

@@ -24,7 +24,7 @@ from .emit import Emitter, GroundAction
 from .ground import Ctx, Grounder, check_nesting
 from .layout import make_layout
 from .reachability import Analysis, reachable
-from .relevance import relevant_actions
+from .relevance import reads, relevant_actions
 from .source import Origin
 
 @dataclass(frozen=True)
@@ -267,19 +267,44 @@ def _position(d: Dungeon, layout):
 
 
 def _goal_positions(an: Analysis, reach, goal_ir, position, static_pos, position_vars, layout):
-    """Agent positions at which the goal may hold (an over-approximation), for Manhattan."""
+    """Agent positions at which the goal may hold (an over-approximation), for Manhattan.
+
+    The box of positions is split in halves, an axis at a time, and a part where the goal
+    cannot hold is dropped whole: a goal "stand here" costs a few dozen evaluations, not
+    one per position of a large world. A goal that reads no position holds anywhere."""
     if not position:
         return None
     cell, layer = an.cells(reach.written)
-    axes = [[value] if dyn is None else list(range(layout.slots[dyn[0]].lo, layout.slots[dyn[0]].hi + 1))
+    axes = [(value, value) if dyn is None else (layout.slots[dyn[0]].lo, layout.slots[dyn[0]].hi)
             for dyn, value in zip(position, static_pos)]
+    dynamic = [var for var, dyn in zip(position_vars, position) if dyn is not None]
+    read = reads(goal_ir, an, {}, set())
+    if not read & set(dynamic):
+        if maybe_true(Abstract({}, cell, layer, sets=dict(reach.values), var_at=an.var_at).eval(goal_ir)):
+            return tuple(itertools.product(*(range(lo, hi + 1) for lo, hi in axes)))
+        return ()
     found = []
-    for point in itertools.product(*axes):
+
+    def maybe(box) -> bool:
         sets = dict(reach.values)
-        sets.update({var: frozenset({v}) for var, dyn, v in zip(position_vars, position, point) if dyn is not None})
-        if maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal_ir)):
-            found.append(point)
-    return tuple(found)
+        sets.update({var: frozenset(range(lo, hi + 1))
+                     for var, dyn, (lo, hi) in zip(position_vars, position, box) if dyn is not None})
+        return maybe_true(Abstract({}, cell, layer, sets=sets, var_at=an.var_at).eval(goal_ir))
+
+    def split(box) -> None:
+        if not maybe(box):
+            return
+        wide = max(range(len(box)), key=lambda i: box[i][1] - box[i][0])
+        lo, hi = box[wide]
+        if lo == hi:
+            found.append(tuple(lo for lo, _ in box))
+            return
+        mid = (lo + hi) // 2
+        split(box[:wide] + [(lo, mid)] + box[wide + 1:])
+        split(box[:wide] + [(mid + 1, hi)] + box[wide + 1:])
+
+    split(axes)
+    return tuple(sorted(found))
 
 
 def _display(d: Dungeon, layout) -> dict:
