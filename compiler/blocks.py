@@ -6,8 +6,8 @@ nodes, each with a position, and loading them costs seconds; one block scalar of
 `A..B` (both ends included), so a floor or a wall is one line. `#` starts a comment.
 
     blocks: |
-      0..73 0 0..73 bedrock     # a floor
-      5 1 7 stone
+      0..73 0 0..73 floor       # a floor: one line
+      5 1 7 wall
 """
 from __future__ import annotations
 
