@@ -174,6 +174,9 @@ class Model:
     live_successors: Callable | None = None    # successors for search (see `search_successors`)
     fresh_successors: Callable | None = None   # live fused with a duplicate check (see `search_fresh`)
     memo: dict = field(default_factory=dict, compare=False, repr=False)  # what PROVIDED analyses built for it
+    # per searched action, the most it moves the agent along each dynamic axis (compiler/steps.py);
+    # None: unknown (each action is taken to move along one axis by one)
+    position_steps: tuple | None = None
 
     def data(self, name: str, **options):
         """A lazily computed analysis of the model, e.g. "pattern_database" (or None): the

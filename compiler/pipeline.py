@@ -26,6 +26,7 @@ from .layout import make_layout
 from .reachability import Analysis, reachable
 from .relevance import reads, relevant_actions
 from .source import Origin
+from .steps import position_steps
 
 @dataclass(frozen=True)
 class Compiled:
@@ -98,6 +99,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
                       for s in layout.slots)
     position, static_pos, position_vars = _position(dungeon, layout)
     goal_positions = _goal_positions(an, reach, goal_ir, position, static_pos, position_vars, layout)
+    steps = position_steps(actions, search, position_vars, position)
 
     layer_expanders = functools.lru_cache(maxsize=1)(ns["_build_layers"])
 
@@ -141,7 +143,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
-        position=position, position_static=static_pos, goal_positions=goal_positions,
+        position=position, position_static=static_pos, goal_positions=goal_positions, position_steps=steps,
         report=report, source=source, display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"compiled": lambda: compiled,
                                                     "layer_expanders": layer_expanders,

@@ -163,3 +163,19 @@ def test_simulator_agrees_with_a_literal_reading_of_mineplanner(seed):
         if not options:
             break
         state, world = rnd.choice(options)
+
+
+def test_manhattan_counts_a_jump_as_one_step():
+    # A jump moves along x and y at once: the distance heuristic must not count it twice.
+    # On steps.yaml the optimum is 4 (above); with an overestimate A* returned 5.
+    model = compile_dungeon(str(HERE / "steps.yaml"))
+    assert model.position_steps == ((0, 0, 0), (1, 0, 0), (1, 1, 0))
+    from bcc.heuristics.position import manhattan
+    h = manhattan(model)
+    assert h(model.initial) == 4        # max(|dx| + |dz|, |dy|) = max(4, 0)
+    assert solve_cost(HERE / "steps.yaml", "astar", heuristic="manhattan") == 4
+
+
+def test_minecraft_distances_are_unchanged():
+    # move_forward's step is read from a table (dx[facing]): unknown here, so one cell per action.
+    assert compile_dungeon("bridge").position_steps is None
