@@ -17,7 +17,7 @@ import time
 from typing import Callable, Iterable, Iterator
 
 from ..errors import BccError
-from .limits import Limits, Outcome
+from ..run.children import Limits, Outcome
 from .runs import Run
 
 BACKENDS = ("local", "ray")
@@ -41,7 +41,7 @@ def map_runs(function: Callable, items: Iterable, *, backend: str = "local", wor
         raise BccError(f"workers must be at least 1, got {workers}")
     check_backend(backend, address)
     if backend == "local":
-        from .pool import map_local
+        from ..run.pool import map_local
         return map_local(function, items, workers or os.cpu_count() or 1, limits_of, prepare)
     from .ray_backend import map_ray
     return map_ray(function, items, workers, limits_of, address, prepare)

@@ -12,7 +12,7 @@ from typing import Callable, Iterable, Iterator
 
 from ..errors import BccError
 from ..extras import install_hint
-from .limits import Limits, Outcome, one_line, run_limited
+from ..run.children import Limits, Outcome, one_line, run_limited
 
 INSTALL = f"the ray backend needs Ray: {install_hint('ray')}"
 

@@ -30,7 +30,7 @@ def play_cmd(dungeon, record, command_text, as_json):
 
     On a terminal keys act at once; from a pipe each line is a string of keys."""
     from ..atomic import check_writable
-    from ..grounding.demonstration import extract
+    from ..demonstration import extract
     from ..grounding.play import line_keys, play, tty_keys
     model = compile_model(dungeon, None)
     if record:
@@ -94,7 +94,7 @@ def train_cmd(db, with_corpus, pairs_paths, dungeon, output, time_limit, max_mem
 def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
     from ..grounding import corpus, pairs
     from ..grounding.dataset import Dataset
-    from ..grounding.learn import train
+    from ..grounding.learn import candidates, train
     rows = []
     for path in pairs_paths:
         given = pairs.load(path, dungeon)
@@ -114,7 +114,7 @@ def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
             raise BccError("the dataset has no pairs: add some with `bcc learn`, or pass --corpus or --pairs FILE",
                            str(data.path))
         model, seconds = train(rows, candidates_of=lambda r: corpus.candidates(r) if "prefix" in r
-                               else pairs.candidates(r["dungeon"]))
+                               else candidates(r["dungeon"]))
         data.add_model(model.to_json(), len(rows), with_corpus, seconds)
     finally:
         data.close()

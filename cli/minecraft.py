@@ -86,7 +86,8 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
         say(f"Join with a Minecraft {VERSION} client: Multiplayer > Direct Connection > 127.0.0.1:{port}. "
             "In the chat: 'learn <command>' stores a demonstration, 'reset' starts over. Ctrl-C stops.")
         try:
-            host(model, bridge, Path(out_dir), log=say, duration=duration, db=db, written=written)
+            host(model, bridge, Path(out_dir), log=say, duration=duration,
+                 keep=lambda demo, path: store(demo, path, db), written=written)
         except KeyboardInterrupt:
             say("stopping the server")
     if as_json:
@@ -154,7 +155,7 @@ def record_cmd(dungeon, command, port, player, output, timeout, keep_going, db, 
     the player types 'done' (or 'learn <command>', which also names the command).
     """
     from ..minecraft.bridge import VERSION, Bridge
-    from ..minecraft.record import NobodyJoined, record, store, wait_for_player
+    from ..minecraft.record import NobodyJoined, record, wait_for_player
     from ..minecraft.world import WorldMap, check_supported
     if command is not None and not command.strip():
         raise BccError("the command is empty: give the words the demonstration carries out, or leave COMMAND out")
@@ -187,6 +188,24 @@ def record_cmd(dungeon, command, port, player, output, timeout, keep_going, db, 
     click.echo(f"recorded {len(demo.actions)} actions ({recording.ended}): {' '.join(demo.actions)}")
     click.echo(f"demonstration written to {path}")
     click.echo(stored["message"])
+
+
+def store(demo, path, db: str | None = None) -> dict:
+    """Save a demonstration recorded in Minecraft, then add the (command, demonstration)
+    pair to the grounding dataset as `bcc learn` does (the same function: the dataset's
+    own checks and transaction apply); a pair it refuses is saved only, and the message
+    says why. Here, in the command line, because it puts two edges together."""
+    import shlex
+    from ..grounding.learn import add_pair
+    demo.save(path)
+    argv = ["learn", demo.dungeon, demo.command, "--demo", str(path)] + (["--db", str(db)] if db else [])
+    shown = "bcc " + " ".join(shlex.quote(a) for a in argv)
+    try:
+        info = add_pair(demo.dungeon, demo.command, str(path), db)
+    except BccError as exc:
+        return {"stored": False, "message": f"not stored in the grounding dataset: `{shown}` says: {exc}"}
+    return {"stored": True, "task": info["task"], "db": info["db"],
+            "message": f"stored in the grounding dataset {info['db']} as {info['task']!r} ({shown})"}
 
 
 COMMANDS = [minecraft]

@@ -7,7 +7,7 @@ reached by a short random walk, a demonstration planned by A* from there, and a 
 from templates with varied verbs and phrasings. Each line of `corpus/pairs.jsonl` keeps
 the walk (`prefix`), the demonstration's `actions`, the true `task` (for evaluation only)
 and the inferred `explanations` (what training sees), so training needs no compiling.
-The demonstrations are planned through `bcc.batch.map_runs`, on `workers` processes, with
+The demonstrations are planned through `bcc.run.pool.map_local`, on `workers` processes, with
 the same output for any number of them (see `generate`).
 """
 from __future__ import annotations
@@ -106,7 +106,7 @@ def generate(n: int = 360, seed: int = 0, out: Path = CORPUS_DIR, progress=None,
 
     The pairs are drawn one after another from one random stream, and whether a draw
     becomes a pair depends on its demonstration (planned, then explained). The planning
-    goes through `bcc.batch.map_runs`, `workers` at a time: the draws ahead are guessed
+    goes through `bcc.run.pool.map_local`, `workers` at a time: the draws ahead are guessed
     assuming each succeeds (`_plan_ahead`), planned in parallel, and then the sequential
     loop below consumes the results; a draw it has no result for (a guess after a
     failure was wrong) is planned in the next round. So the output is the same, byte for
@@ -179,7 +179,7 @@ class _Draws:
 
 @dataclasses.dataclass(frozen=True)
 class _Demo:
-    """One demonstration to plan: small and picklable (a work item of `map_runs`)."""
+    """One demonstration to plan: small and picklable (a work item of `map_local`)."""
     dungeon: str      # resolved: a shipped name or a path
     task: str
     start: bytes
@@ -188,7 +188,8 @@ class _Demo:
 def _plan_ahead(rng: random.Random, draw: _Draws, planned: dict, out: Path, window: int, workers: int) -> dict:
     """Plan the next `window` draws not planned yet, guessing that each one becomes a pair
     (so that its phrase draws come before the next), on `workers` processes."""
-    from ..batch import Limits, map_runs
+    from ..run.children import Limits
+    from ..run.pool import map_local
     guess = random.Random()
     guess.setstate(rng.getstate())
     keys, seen = [], set()
@@ -207,8 +208,8 @@ def _plan_ahead(rng: random.Random, draw: _Draws, planned: dict, out: Path, wind
         draw.phrase(guess, family, slots)
     items = [_Demo(resolve(ref, out), task, state) for ref, task, state in keys]
     found = {}
-    for outcome in map_runs(_demonstrate, items, workers=workers, limits=Limits.around(SAFETY_SECONDS, None),
-                            prepare=_prepare_demo):
+    limits = Limits.around(SAFETY_SECONDS, None)
+    for outcome in map_local(_demonstrate, items, workers, lambda item: limits, _prepare_demo):
         if not outcome.ok:
             item = items[outcome.index]
             raise BccError(f"corpus: planning {item.task} in {item.dungeon} failed: {outcome.error}")
@@ -236,7 +237,7 @@ def _demonstrate(item: _Demo):
     """(actions, explanations) of an A* demonstration of the task from the start, or None
     when there is no plan within PLAN_STATES states or no explanation of it."""
     from ..solvers import Budget
-    from .demonstration import from_actions
+    from ..demonstration import from_actions
     from .interpret import plan
     from .learn import explain, space_for
     result = plan(item.dungeon, item.task, item.start, Budget(max_states=PLAN_STATES, time_limit=SAFETY_SECONDS))
@@ -266,7 +267,7 @@ def _random_walk(model, rng: random.Random, steps: int):
 
 def start_state(row: dict):
     """The (space, start state) of a corpus row."""
-    from .demonstration import from_actions
+    from ..demonstration import from_actions
     from .learn import space_for
     space = space_for(resolve(row["dungeon"]))
     return space, from_actions(space.model, row["prefix"]).states[-1]

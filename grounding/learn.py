@@ -10,7 +10,7 @@ import re
 import time
 
 from ..errors import BccError
-from .demonstration import Demonstration
+from ..demonstration import Demonstration
 from .infer import explanations
 from .ensemble import Ensemble
 from .tasks import TaskSpace
@@ -22,6 +22,13 @@ def space_for(ref: str) -> TaskSpace:
     """The candidate tasks of a dungeon (compiled once per process)."""
     from ..compiler import compile_dungeon
     return TaskSpace(compile_dungeon(ref), ref)
+
+
+@functools.lru_cache(maxsize=64)
+def candidates(ref: str) -> list[str]:
+    """Candidate task texts of a dungeon from its start (computed once per process)."""
+    space = space_for(ref)
+    return [t.text for t in space.tasks(space.model.initial)]
 
 
 def explain(demo: Demonstration, ref: str, optimality: bool = True) -> list[dict]:
@@ -58,7 +65,6 @@ def train(rows, candidates_of=None) -> tuple[Ensemble, float]:
     """The grounding model (log-linear models voting, ensemble.py) trained on rows with `command`, `dungeon` and `explanations`
     ([{task, weight}]), and the training time in seconds. A row's negatives are its
     dungeon's candidate tasks from the start, or `candidates_of(row)`."""
-    from .pairs import candidates
     t0 = time.perf_counter()
     examples = []
     for r in rows:

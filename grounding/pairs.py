@@ -69,6 +69,7 @@ def dungeons_with(tasks: set) -> list[str]:
     """The shipped dungeons whose candidate tasks include all of `tasks`: pairs that name
     no dungeon, such as the cleanup-amt corpus's, are read in the one their tasks are about."""
     from ..compiler.dungeon import shipped_dungeons
+    from .learn import candidates
     fits = []
     for ref in shipped_dungeons():
         try:
@@ -82,7 +83,7 @@ def dungeons_with(tasks: set) -> list[str]:
 
 def check_tasks(rows: list[dict]) -> None:
     """Every pair's task must be a candidate task of its dungeon from the start."""
-    from .learn import space_for
+    from .learn import candidates, space_for
     for row in rows:
         try:
             space = space_for(row["dungeon"])
@@ -93,24 +94,12 @@ def check_tasks(rows: list[dict]) -> None:
                            f"(its atoms: {', '.join(a.text for a in space.atoms)})", row["path"], row["line"], 1)
 
 
-_candidates: dict = {}
-
-
-def candidates(ref: str) -> list[str]:
-    """Candidate task texts of a dungeon from its start (cached per process)."""
-    if ref not in _candidates:
-        from .learn import space_for
-        space = space_for(ref)
-        _candidates[ref] = [t.text for t in space.tasks(space.model.initial)]
-    return _candidates[ref]
-
-
 def demonstrated(ref: str, task: str, time_limit: float = 60.0) -> dict:
     """{task: weight} the seed's pipeline infers from an optimal demonstration of `task`."""
     key = (ref, task)
     if key not in _explained:
         from ..solvers import Budget
-        from .demonstration import from_actions
+        from ..demonstration import from_actions
         from .interpret import plan
         from .learn import explain, space_for
         result = plan(ref, task, None, Budget(time_limit=time_limit, max_memory_mb=Budget.default().max_memory_mb))
@@ -126,6 +115,7 @@ _explained: dict = {}
 
 def examples(rows: list[dict], mode: str) -> list:
     """Training examples of the log-linear model: (command, candidates, {task: weight})."""
+    from .learn import candidates
     out = []
     for r in rows:
         target = {r["task"]: 1.0} if mode == "tasks" else demonstrated(r["dungeon"], r["task"])
@@ -151,6 +141,7 @@ def train_nested(rows: list[dict], mode: str = "tasks", seed: int = 0):
 
 
 def predict(model, rows: list[dict]) -> list[str]:
+    from .learn import candidates
     out = []
     for r in rows:
         cands = candidates(r["dungeon"])
@@ -173,6 +164,7 @@ def folds(rows: list[dict], k: int, seed: int = 0) -> list[tuple[list, list]]:
 def _prepare_fold(item) -> None:
     """In the parent, before forking a fold's child: what every fold needs, computed once
     (the dungeon's candidate tasks; in demonstrations mode, each task's explanations)."""
+    from .learn import candidates
     train_rows, test_rows, mode, _ = item
     for ref in {r["dungeon"] for r in train_rows + test_rows}:
         candidates(ref)
@@ -205,7 +197,7 @@ def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None
     """Train a fresh model on each split's training pairs; score its held-out pairs. With
     `nested_seed`, each split's votes are chosen by an inner cross-validation of its
     training pairs (shuffled with that seed; nested.py), reported under "chosen". With
-    `workers` > 1 the splits run in that many child processes at once (bcc.batch.map_runs),
+    `workers` > 1 the splits run in that many child processes at once (bcc.run.pool.map_local),
     each under an equal share of `memory_mb`; the report is the same for any number of
     workers (the models are seeded, and pairs come back in the splits' order)."""
     done = [None] * len(splits)
@@ -215,11 +207,12 @@ def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None
             if progress:
                 progress(k + 1, len(splits))
     else:
-        from ..batch import Limits, map_runs
+        from ..run.children import Limits
+        from ..run.pool import map_local
         from ..solvers.limits import BudgetExceeded
-        share = None if memory_mb is None else memory_mb / workers
-        outcomes = map_runs(_fold, [(*split, mode, nested_seed) for split in splits], workers=workers,
-                            limits=Limits(memory_mb=share), prepare=_prepare_fold)
+        limits = Limits(memory_mb=None if memory_mb is None else memory_mb / workers)
+        outcomes = map_local(_fold, [(*split, mode, nested_seed) for split in splits], workers, lambda item: limits,
+                             _prepare_fold)
         for finished, outcome in enumerate(outcomes, 1):
             if outcome.limit:
                 raise BudgetExceeded(outcome.limit)

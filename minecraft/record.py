@@ -128,7 +128,7 @@ class Recorder:
 
     def demonstration(self, command: str | None):
         """The recording so far as a Demonstration (actions inferred by the extractor)."""
-        from ..grounding.demonstration import extract
+        from ..demonstration import extract
         demo = extract(self.model, list(self.recording.states))
         demo.command = command
         return demo
@@ -219,28 +219,20 @@ def wait_for_player(bridge: Bridge, player: str | None, timeout: float) -> str:
             raise bridge.exit_error()
 
 
-def store(demo, path, db: str | None = None) -> dict:
-    """Save the demonstration, then add the (command, demonstration) pair to the grounding
-    dataset as `bcc learn` does (the same function: the dataset's own checks and
-    transaction apply); a pair it refuses is saved only, and the message says why."""
-    import shlex
-    from ..grounding.learn import add_pair
+def save_only(demo, path) -> dict:
+    """`host`'s default keeper: write the demonstration file, nothing more."""
     demo.save(path)
-    argv = ["learn", demo.dungeon, demo.command, "--demo", str(path)] + (["--db", str(db)] if db else [])
-    shown = "bcc " + " ".join(shlex.quote(a) for a in argv)
-    try:
-        info = add_pair(demo.dungeon, demo.command, str(path), db)
-    except BccError as exc:
-        return {"stored": False, "message": f"not stored in the grounding dataset: `{shown}` says: {exc}"}
-    return {"stored": True, "task": info["task"], "db": info["db"],
-            "message": f"stored in the grounding dataset {info['db']} as {info['task']!r} ({shown})"}
+    return {"stored": False, "message": "saved"}
 
 
 def host(model: Model, bridge: Bridge, out_dir, log: Callable[[str], None] = print,
-         duration: float | None = None, interval: float = POLL_SECONDS, stop=None, db: str | None = None,
-         written: list | None = None) -> list:
+         duration: float | None = None, interval: float = POLL_SECONDS, stop=None,
+         keep: Callable[..., dict] = save_only, written: list | None = None) -> list:
     """`bcc minecraft serve`: follow the first person in the world; 'learn <command>' in the
     chat stores what they did since the start (or the last 'learn'/'reset') and starts over.
+    `keep(demo, path)` writes each demonstration and says where else it went (`bcc
+    minecraft serve` also adds it to the grounding dataset: the command line puts the two
+    edges together); its dict's "message" is logged.
     Runs for `duration` seconds (None: until interrupted) or until the `stop` event is set.
     Returns the demonstration files written, also appended to `written` as they are, so a
     caller interrupted by Ctrl-C still knows them."""
@@ -288,7 +280,7 @@ def host(model: Model, bridge: Bridge, out_dir, log: Callable[[str], None] = pri
                         continue
                     out_dir.mkdir(parents=True, exist_ok=True)
                     path = out_dir / f"{model.name}-{len(written) + 1}-{time.strftime('%Y%m%d-%H%M%S')}.json"
-                    info = store(demo, path, db)
+                    info = keep(demo, path)
                     written.append(path)
                     log(f"learned {said[1]!r}: {len(demo.actions)} actions -> {path}; {info['message']}")
                     bridge.chat(f"bcc: learned '{said[1]}' from {len(demo.actions)} actions; back to the start", who)

@@ -223,5 +223,5 @@ def describe(model: Model, state: bytes) -> str:
 
 def difference(model: Model, predicted: bytes, observed: bytes) -> list:
     """Human-readable differences between two states (variables, then cells)."""
-    from ..grounding.demonstration import changes
+    from ..demonstration import changes
     return [f"{what}: predicted {a}, observed {b}" for what, a, b in changes(model, predicted, observed)]

@@ -16,7 +16,7 @@ def replay_body(model, rooms: list[dict], actions: list[str], include_scene: boo
 
 
 def demonstration_body(model, posted: bool, actions: list[str], command: str | None) -> dict:
-    from ..grounding.demonstration import from_actions
+    from ..demonstration import from_actions
     demo = from_actions(model, actions, command=command, path="actions")
     if posted:  # posted text has no path the file could name: save it as NAME.yaml beside it
         demo.dungeon = f"{model.name}.yaml"

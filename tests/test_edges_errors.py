@@ -71,7 +71,7 @@ def test_waiting_for_nobody_is_a_budget_not_bad_input():
 
 
 def test_world_and_demonstration_differences_share_one_comparison(model_of):
-    from bcc.grounding.demonstration import changes
+    from bcc.demonstration import changes
     from bcc.minecraft.world import difference
     m = model_of("bridge")
     down = m.apply(m.action_names.index("look_down"), m.initial)

@@ -8,7 +8,7 @@ import pytest
 from bcc.cli import main
 from bcc.compiler import compile_dungeon
 from bcc.grounding.dataset import Dataset
-from bcc.grounding.demonstration import Demonstration, from_actions, snapshot
+from bcc.demonstration import Demonstration, from_actions, snapshot
 from bcc.grounding.infer import explanations, optimal_steps
 from bcc.grounding.learn import space_for
 from bcc.grounding.tasks import canonical

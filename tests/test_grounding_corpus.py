@@ -8,7 +8,7 @@ import pytest
 from bcc.cli import main
 from bcc.errors import BccError
 from bcc.grounding import corpus
-from bcc.grounding.demonstration import from_actions
+from bcc.demonstration import from_actions
 
 from click.testing import CliRunner
 from conftest import compiled

@@ -5,7 +5,7 @@ import json
 
 import pytest
 from bcc.errors import BccError
-from bcc.grounding.demonstration import (
+from bcc.demonstration import (
     Demonstration,
     extract,
     from_actions,

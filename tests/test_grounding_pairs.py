@@ -337,9 +337,9 @@ _shipped = {}
 def test_any_text_gets_a_distribution_from_every_voter(text):
     """Whatever is typed (empty, punctuation, other scripts, words never trained on), each
     member of the shipped model and their vote give finite log-probabilities summing to 1."""
-    from bcc.grounding import corpus, pairs
+    from bcc.grounding import corpus, learn
     if not _shipped:
-        _shipped["model"], _shipped["tasks"] = corpus.corpus_model(), pairs.candidates("bridge")
+        _shipped["model"], _shipped["tasks"] = corpus.corpus_model(), learn.candidates("bridge")
     model, tasks = _shipped["model"], _shipped["tasks"]
     for scorer in [*model.members, model]:
         lp = np.array(scorer.log_posterior(text, tasks))

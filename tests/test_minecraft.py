@@ -263,8 +263,8 @@ def test_a_bridge_that_does_not_start(tmp_path, monkeypatch, no_install_check):
 
 
 def test_store_adds_the_pair_with_bcc_learn(tmp_path, model_of):
-    from bcc.grounding.demonstration import Demonstration, from_actions
-    from bcc.minecraft.record import store
+    from bcc.demonstration import Demonstration, from_actions
+    from bcc.cli.minecraft import store
     m = model_of("bridge")
     demo = from_actions(m, BRIDGE_PLAN, command="go to the gold block")
     db = tmp_path / "grounding.sqlite"

@@ -69,21 +69,19 @@ def test_recorded_play_gives_the_demonstrated_actions(bridge, model_of):
 
 
 def test_serve_learns_from_chat_and_resets(bridge, model_of, tmp_path, monkeypatch):
-    from bcc.minecraft import record as record_mod
     stored = []
 
-    def save_only(demo, path, db=None):   # the grounding dataset is not this test's subject
+    def save_only(demo, path):   # the grounding dataset is not this test's subject
         demo.save(path)
         stored.append(path)
         return {"stored": False, "message": "saved"}
 
-    monkeypatch.setattr(record_mod, "store", save_only)
     m = model_of("bridge")
     bridge.start(port=free_port())
     bridge.build(WorldMap(m))
     stop = threading.Event()
     server = threading.Thread(target=host, args=(m, bridge, tmp_path),
-                              kwargs={"log": lambda line: None, "duration": 60, "stop": stop}, daemon=True)
+                              kwargs={"log": lambda line: None, "duration": 60, "stop": stop, "keep": save_only}, daemon=True)
     server.start()
     bridge.spawn_bot("sam", person=True)
     time.sleep(1.5)
@@ -93,7 +91,7 @@ def test_serve_learns_from_chat_and_resets(bridge, model_of, tmp_path, monkeypat
     while not stored and time.monotonic() < deadline:
         time.sleep(0.1)
     assert stored, "no demonstration was stored"
-    from bcc.grounding.demonstration import Demonstration
+    from bcc.demonstration import Demonstration
     demo = Demonstration.load(stored[0], model=m)
     assert demo.command == "walk south"
     assert demo.actions == ["rotate_left", "rotate_left", "move_forward"]

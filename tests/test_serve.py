@@ -295,7 +295,7 @@ def test_replay_stops_at_an_action_that_does_not_apply(api):
 
 
 def test_demonstration_from_played_actions(api):
-    from bcc.grounding.demonstration import from_json
+    from bcc.demonstration import from_json
     actions = ["rotate_left", "rotate_left", "move_forward"]
     status, demo = api.post("/demonstration", {"dungeon": "bridge", "actions": actions, "command": "go south"})
     assert status == 200

@@ -6,8 +6,9 @@ allocation ends in a MemoryError, and a wall-clock deadline after which the pare
 kills it. A child that dies (os._exit, a segfault, the OOM killer) is reported, never
 waited for. Either way the caller gets an `Outcome`, so a sweep goes on.
 
-Both backends use this: the local pool runs many `Child`ren at once; a Ray task runs one
-with `run_limited`, so a runaway run never takes a Ray worker down.
+Every fan-out uses this: the local pool (pool.py: batch sweeps, the grounding
+cross-validation) runs many `Child`ren at once; a Ray task (batch/ray_backend.py) runs
+one with `run_limited`, so a runaway run never takes a Ray worker down.
 """
 from __future__ import annotations
 

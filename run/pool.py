@@ -1,7 +1,7 @@
 """The local backend: up to `workers` items at once, each in its own child process.
 
 A fresh process per item (forked, so bcc is already imported: a few milliseconds) is
-what makes the hard limits of `limits.py` possible: a killed or crashed run takes no
+what makes the hard limits of `children.py` possible: a killed or crashed run takes no
 pool down with it, unlike `concurrent.futures`, whose pool breaks for good when one
 worker dies. Outcomes come back in completion order.
 """
@@ -11,7 +11,7 @@ import time
 from multiprocessing.connection import wait
 from typing import Callable, Iterable, Iterator
 
-from .limits import Child, Limits, Outcome, run_prepare
+from .children import Child, Limits, Outcome, run_prepare
 
 
 def map_local(function, items: Iterable, workers: int, limits_of: Callable[[object], Limits],

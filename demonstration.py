@@ -1,7 +1,8 @@
 """Demonstrations: what a person (or a planner) did in a dungeon, as actions and states.
 
 One file format is shared by the grounding layer, the web viewer's play mode and the
-Minecraft recorder (`"format": "bcc-demonstration/1"`). Observers see states, not
+Minecraft recorder (`"format": "bcc-demonstration/1"`), so it lives below all three
+edges, beside the replay of plans (simulate.py). Observers see states, not
 actions: a recorder polls the world (the reference every 100 ms), so `extract` drops
 consecutive duplicate snapshots and infers each action as the one whose model successor
 is the next observed state. A snapshot names every dynamic variable and every cell of
@@ -13,8 +14,8 @@ import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..errors import BccError, read_input
-from ..model import Model
+from .errors import BccError, read_input
+from .model import Model
 
 FORMAT = "bcc-demonstration/1"
 
@@ -101,7 +102,7 @@ class Demonstration:
                 "actions": list(self.actions), "states": [snapshot(self.model, s) for s in self.states]}
 
     def save(self, path: str | Path) -> None:
-        from ..atomic import write_text
+        from .atomic import write_text
         write_text(path, json.dumps(self.to_json(), separators=(",", ":")) + "\n")
 
     @classmethod
@@ -118,7 +119,7 @@ class Demonstration:
 
 def dungeon_ref(model: Model) -> str:
     """How a demonstration names its dungeon: the shipped name, else the file's path."""
-    from ..compiler import shipped_dungeons
+    from .compiler import shipped_dungeons
     return model.name if model.name in shipped_dungeons() and Path(model.path).stem == model.name else model.path
 
 
@@ -140,7 +141,7 @@ def from_json(data, model: Model | None = None, path: str | None = None) -> Demo
     if actions is None and states is None:
         raise BccError("a demonstration has \"actions\", \"states\" or both", path)
     if model is None:
-        from ..compiler import compile_dungeon
+        from .compiler import compile_dungeon
         ref = dungeon
         if path is not None and not Path(ref).is_absolute() and (Path(path).parent / ref).is_file():
             ref = str(Path(path).parent / ref)   # a path relative to the demonstration file
