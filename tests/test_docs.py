@@ -171,7 +171,7 @@ def checkout_copy(target: Path) -> Path:
     """This checkout's package (code and data, without tests, benchmarks, docs or build
     output) copied to `target`, a folder named `bcc`."""
     shutil.copytree(ROOT, target, ignore=shutil.ignore_patterns(".*", "__pycache__", "*.egg-info", "tests", "bench",
-                                                                "docs", "build", "dist"))
+                                                                "docs", "build", "dist", "node_modules"))
     return target
 
 
