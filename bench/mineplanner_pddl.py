@@ -53,6 +53,7 @@ TASKS = ["Bridge", "Build_Cabin", "Build_Cross", "Build_Shape", "Build_Wall", "B
          "Pickup_Diamond", "Pickup_and_Place", "Place_Wood"]
 LEVELS = ["Easy", "Medium", "Hard"]
 VALIDATE_SECONDS = 300
+FD_MEMORY_MB = 4000  # Fast Downward's translator took 1.8 GB on an Easy task; the machine is shared
 WALL_FACTOR = 6      # the wall-clock cap, in CPU limits (a shared machine runs a process at a fraction of a core)
 GOAL_ACTION = "checkgoal"
 # Words of PDDL itself: never renamed.
@@ -262,7 +263,7 @@ def run_fd(domain: str, problem: str, limit: float) -> dict:
     from bcc.pddl_io.fast_downward import driver
     with tempfile.TemporaryDirectory(prefix="bcc-mp-fd-") as tmp:
         cmd = [sys.executable, str(driver()), "--alias", "lama-first", "--overall-time-limit", f"{int(limit)}s",
-               "--plan-file", os.path.join(tmp, "plan"), os.path.abspath(domain), os.path.abspath(problem)]
+               "--overall-memory-limit", f"{FD_MEMORY_MB}M", "--plan-file", os.path.join(tmp, "plan"), os.path.abspath(domain), os.path.abspath(problem)]
         r = timed(cmd, limit, cwd=tmp, cpu_capped=False)    # the driver limits its components itself
         row = {k: r[k] for k in ("cpu_seconds", "wall_seconds", "peak_mb")}
         plan_path = os.path.join(tmp, "plan")
@@ -303,17 +304,25 @@ def human_length(data: Path, task: str, level: str) -> int | None:
     return sum(1 for s in steps if s.get("action") != GOAL_ACTION)
 
 
-def run_task(task: str, level: str, data: Path, work: Path, limit: float, fd: bool) -> dict | None:
+def run_task(task: str, level: str, data: Path, work: Path, limit: float, planners: set,
+             renamed_always: bool = False) -> dict | None:
     prep = prepare(task, level, data, work / f"{task}_{level}")
     if prep is None:
         return None
     p = prep["paths"]
     row = {"task": task, "level": level, "time_limit": limit, "moved_to_constants": prep["moved_to_constants"],
            "human_length": human_length(data, task, level)}
+    if "fd" in planners:
+        row["fd_lama_first"] = run_fd(p["domain"], p["problem"], limit)
+    if "bcc" not in planners:
+        return row
     plan_file = str(work / f"{task}_{level}" / "bcc.plan")
     bcc = run_bcc(p["domain"], p["problem"], limit, plan_file)
     if bcc.get("solved"):
         bcc["validation"] = validate(p["domain"], p["problem"], bcc["plan"])
+    if not bcc.get("solved") and not renamed_always:
+        row["bcc"], row["bcc_renamed"] = bcc, {"status": "not run (the original was not solved)"}
+        return row
     ren = run_bcc(p["renamed_domain"], p["renamed_problem"], limit, plan_file + ".renamed")
     back = {v: k for k, v in prep["names"].items()}
     if ren.get("solved"):
@@ -324,8 +333,6 @@ def run_task(task: str, level: str, data: Path, work: Path, limit: float, fd: bo
     row["bcc"] = bcc
     row["bcc_renamed"] = ren
     row["match"] = bcc.get("solved") == ren.get("solved") and bcc.get("length") == ren.get("length")
-    if fd:
-        row["fd_lama_first"] = run_fd(p["domain"], p["problem"], limit)
     return row
 
 
@@ -340,14 +347,14 @@ def cell(r: dict | None) -> str:
 def print_table(rows: list) -> None:
     print(f"{'task':<28}{'human':>6}  {'bcc (len cpu mem)':<24}{'bcc renamed':<24}{'FD lama-first':<24}valid")
     for r in rows:
-        b = r["bcc"]
+        b = r.get("bcc", {})
         print(f"{r['task'] + ' ' + r['level']:<28}{r['human_length'] or '-':>6}  {cell(b):<24}"
-              f"{cell(r['bcc_renamed']):<24}{cell(r.get('fd_lama_first')):<24}{b.get('validation', '')[:24]}")
+              f"{cell(r.get('bcc_renamed')):<24}{cell(r.get('fd_lama_first')):<24}{b.get('validation', '')[:24]}")
     for level in LEVELS:
         mine = [r for r in rows if r["level"] == level]
         if mine:
-            print(f"{level}: bcc {sum(r['bcc']['solved'] for r in mine)}/{len(mine)}, renamed "
-                  f"{sum(r['bcc_renamed']['solved'] for r in mine)}/{len(mine)}, FD lama-first "
+            print(f"{level}: bcc {sum(bool(r.get('bcc', {}).get('solved')) for r in mine)}/{len(mine)}, renamed "
+                  f"{sum(bool(r.get('bcc_renamed', {}).get('solved')) for r in mine)}/{len(mine)}, FD lama-first "
                   f"{sum(bool(r.get('fd_lama_first', {}).get('solved')) for r in mine)}/{len(mine)}")
 
 
@@ -359,10 +366,16 @@ def main(argv=None) -> int:
     ap.add_argument("--only", default=None, help="a regular expression the task's name must match")
     ap.add_argument("--time-limit", type=float, default=600, help="CPU seconds a run [600]")
     ap.add_argument("--limits", default=None, help="per level, e.g. Easy=120,Medium=30,Hard=30 (overrides)")
-    ap.add_argument("--no-fd", action="store_true", help="skip Fast Downward")
+    ap.add_argument("--planners", default="bcc,fd", help="bcc, fd or both [bcc,fd]")
+    ap.add_argument("--renamed-always", action="store_true",
+                    help="run the renamed copy also where the original was not solved (else it is skipped)")
+    ap.add_argument("--merge", nargs="+", default=None,
+                    help="only merge these JSON files of earlier runs (e.g. bcc and fd run side by side) into --json")
     ap.add_argument("--json", default=str(HERE / "mineplanner_pddl.json"))
     ap.add_argument("--work", default=None, help="folder for the task copies and plans [a temporary one]")
     args = ap.parse_args(argv)
+    if args.merge:
+        return merge(args.merge, args.json)
     if not args.data or not (Path(args.data) / "data" / "pddl").is_dir():
         print("MinePlanner's files are missing: pass --data DIR (a copy of github.com/IretonLiu/mine-pddl) "
               "or set MINEPLANNER_DATA; nothing was run", file=sys.stderr)
@@ -380,28 +393,54 @@ def main(argv=None) -> int:
             for task in TASKS:
                 if args.only and not re.search(args.only, task):
                     continue
-                row = run_task(task, level, data, work, limits[level], not args.no_fd)
+                row = run_task(task, level, data, work, limits[level], set(args.planners.split(",")),
+                               args.renamed_always)
                 if row is None:
                     print(f"{task} {level}: files missing, skipped", file=sys.stderr)
                     continue
                 rows.append(row)
-                print(f"{task} {level}: bcc {cell(row['bcc'])} | renamed {cell(row['bcc_renamed'])} | "
+                save(args, limits, rows)          # after every task: a run cut short keeps what it measured
+                print(f"{task} {level}: bcc {cell(row.get('bcc'))} | renamed {cell(row.get('bcc_renamed'))} | "
                       f"FD {cell(row.get('fd_lama_first'))}", file=sys.stderr, flush=True)
     print_table(rows)
+    save(args, limits, rows)
+    print(f"wrote {args.json}", file=sys.stderr)
+    return 0
+
+
+def save(args, limits: dict, rows: list) -> None:
+    import copy
+    rows = copy.deepcopy(rows)
     for r in rows:     # plans are long: the JSON keeps their lengths
         for key in ("bcc", "bcc_renamed"):
-            r[key].pop("plan", None)
+            r.get(key, {}).pop("plan", None)
     out = {"benchmark": "MinePlanner (IretonLiu/mine-pddl), propositional PDDL", "time_limits": limits,
            "note": "CPU seconds per run (RLIMIT_CPU); the issue's 600 s per task applies where time_limit is 600",
            "changes_to_the_tasks": "the problem objects named in the domain's checkgoal action are moved into "
                                    "the domain's :constants (moved_to_constants per task); nothing else",
+           "renamed_copy": "run where the original was solved" + (" and where not" if args.renamed_always else ""),
            "validator": "pddl-pyvalidator (bcc.pddl_io.plans.validate), on the copy with constants moved",
            "machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
            "tasks": rows}
     sys.path.insert(0, str(HERE.parent.parent))
     from bcc.atomic import write_text
     write_text(args.json, json.dumps(out, indent=1) + "\n")
-    print(f"wrote {args.json}", file=sys.stderr)
+
+
+def merge(paths: list, out_path: str) -> int:
+    """Rows of several runs joined by (task, level); the time limits and notes of the first."""
+    runs = [json.loads(Path(p).read_text()) for p in paths]
+    rows: dict = {}
+    for run in runs:
+        for r in run["tasks"]:
+            rows.setdefault((r["task"], r["level"]), {}).update(r)
+    out = dict(runs[0], tasks=list(rows.values()), merged_from=[str(p) for p in paths],
+               time_limits={k: v for run in runs for k, v in run["time_limits"].items()})
+    print_table(out["tasks"])
+    sys.path.insert(0, str(HERE.parent.parent))
+    from bcc.atomic import write_text
+    write_text(out_path, json.dumps(out, indent=1) + "\n")
+    print(f"wrote {out_path}", file=sys.stderr)
     return 0
 
 

@@ -186,3 +186,30 @@ def test_renamed_task_is_searched_in_the_same_order(tmp_path):
     assert "t7" not in (tmp_path / "p.pddl").read_text().split()
     assert [" ".join(back.get(w, w) for w in step.strip("()").split()) for step in b.plan] == \
         [step.strip("()") for step in a.plan]
+
+
+WALK = """(define (domain walk) (:requirements :typing) (:types agent cell)
+  (:predicates (pos ?a - agent ?c - cell) (next ?c ?d - cell) (mark ?c - cell))
+  (:action move :parameters (?a - agent ?c ?d - cell)
+    :precondition (and (pos ?a ?c) (next ?c ?d)) :effect (and (not (pos ?a ?c)) (pos ?a ?d)))
+  (:action put :parameters (?a - agent ?c - cell)
+    :precondition (pos ?a ?c) :effect (mark ?c)))"""
+
+
+def test_domain_transition_distances(tmp_path):
+    """(pos ?a ?c) is functional (move deletes the old cell as it adds the new one);
+    along the one-way line c1 -> c2 -> c3 -> c4 the distance c1 to c4 is 3 moves,
+    c4 to c1 cannot be done; a landmark (mark c3) is achieved by put at c3."""
+    from bcc.pddl_io.lifted_distances import FAR, Distances
+    (tmp_path / "d.pddl").write_text(WALK)
+    (tmp_path / "p.pddl").write_text("(define (problem p) (:domain walk) (:objects r - agent c1 c2 c3 c4 - cell)"
+                                     " (:init (pos r c1) (next c1 c2) (next c2 c3) (next c3 c4))"
+                                     " (:goal (mark c3)))")
+    dom, prob = read_task(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl"))
+    task = LiftedTask(dom, prob)
+    dist = Distances(task)
+    assert dist.functional("pos", "r") and not dist.functional("mark", "c1")
+    assert dist.distance("pos", "r", "c1", "c4") == 3 and dist.distance("pos", "r", "c4", "c1") == FAR
+    assert dist.instances(("atom", "mark", ("c3",))) == [([("pos", "r", "c3")], [])]
+    result = solve(dom, prob, Budget(time_limit=30))
+    assert result.solved and result.plan == ["(move r c1 c2)", "(move r c2 c3)", "(put r c3)"]
