@@ -221,12 +221,17 @@ def main() -> None:
                     row = {**run_one(data, task, level, kind, args, tmp), **human}
                     rows.append(row)
                     print(table([row]).splitlines()[-1], flush=True)
+                    write(args, rows)   # after every task: a run cut short keeps what it measured
     print(table(rows))
+    print(json.dumps(write(args, rows)["summary"], indent=2))
+
+
+def write(args, rows: list) -> dict:
     result = {"machine": platform.node(), "python": platform.python_version(), "time_limit_s": args.time_limit,
               "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "summary": summary(rows, args.time_limit),
               "rows": rows}
-    print(json.dumps(result["summary"], indent=2))
     Path(args.output).write_text(json.dumps(result, indent=1) + "\n")
+    return result
 
 
 if __name__ == "__main__":

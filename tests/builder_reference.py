@@ -73,6 +73,8 @@ def apply(w: World, action: str, stock: str | None = None) -> World | None:
         if not w.exists(y=y + 2):
             return None
         if not S(x, y + 2, z) and not S(fx, y + 1, fz) and not S(fx, y + 2, fz) and S(fx, y, fz):
+            if S(x, y + 1, z) and w.item_at((fx, y + 1, fz)):
+                return None              # jumpup_and_pickup also wants the head's cell free
             return _enter(w, (fx, y + 1, fz))
         return None
     if kind == "drop":                   # y_up, y_2_down, y_3_down exist; three free; block below them
