@@ -20,7 +20,7 @@ def base_row(run: Run) -> dict:
             "options": dict(run.options), "limits": dict(run.limits), "goal": run.goal,
             "solved": False, "status": "error", "budget": None, "cost": None, "plan_length": None,
             "expanded": 0, "generated": 0, "stored": 0, "seconds": 0.0, "wall_seconds": 0.0,
-            "peak_mb": 0.0, "heuristic": None, "message": "", "error": None}
+            "peak_mb": 0.0, "heuristic": None, "converged_episode": None, "message": "", "error": None}
 
 
 def warm_up(run: Run) -> None:
@@ -42,19 +42,20 @@ def warm_up(run: Run) -> None:
 def solve_run(run: Run) -> dict:
     """Compile and solve one run in this process; bad input raises (the caller records it)."""
     from ..compiler import compile_dungeon
-    from ..solvers import get_solver
+    from ..run import Request, run as run_one
     from .dungeons import open_dungeon
     start = time.perf_counter()
     with open_dungeon(run.dungeon) as path:
         model = compile_dungeon(path, goal=run.goal)
-    from ..solvers.options import check_options
-    options = check_options(run.solver, {**dict(run.options), "seed": run.seed})
-    result = get_solver(run.solver)(model, run.budget(), **options)
+    # the worker's child process has its own hard limits (run/children.py)
+    ran = run_one(Request(lambda: model, run.solver, {**dict(run.options), "seed": run.seed}, run.budget(), hard=False))
+    result = ran.result
     row = base_row(run)
     row.update(size=model.grid.width * model.grid.depth, solved=result.solved, status=result.status,
                budget=result.budget, cost=result.cost, plan_length=len(result.plan) if result.solved else None,
                expanded=result.expanded, generated=result.generated, stored=result.stored,
                seconds=result.seconds, peak_mb=result.peak_mb, heuristic=result.heuristic, message=result.message,
+               converged_episode=result.converged_episode,
                wall_seconds=round(time.perf_counter() - start, 6))
     return row
 

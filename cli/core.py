@@ -24,7 +24,7 @@ for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREAD
 from ..errors import BccError, ModelError
 
 from .shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
-                         print_result, progress_enabled, solver_flags, solver_request, time_limit_option, within_budget,
+                         print_result, progress_enabled, solver_flags, solver_given, time_limit_option, within_budget,
                          write_output)
 from ..exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
 
@@ -139,28 +139,21 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
     """Solve DUNGEON: the plan on stdout (one action a line), the summary on stderr.
     Exit 0 solved, 1 no plan or a budget ran out. Options that a solver does not take
     are refused; `bcc solvers` lists each solver's."""
-    from ..solvers import Budget, LEARNING, get_solver, optimal_cost
-    from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
-    solve = get_solver(solver)
-    options = solver_request(solver, solver_options)   # bad options are bad input, before anything runs
-    default = Budget.default()
-    budget = Budget(max_states=max_states, time_limit=time_limit,
-                    max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
-    deadline = Deadline(budget)  # compiling, a reference search and the solve share one budget
-    model = None
-    try:
-        with hard_limits(budget):
-            model = compile_model(dungeon, goal)
-            if output:
-                from ..atomic import check_writable
-                check_writable(output)   # before a long solve, not after it
-            progress = progress_enabled()
-            if solver in LEARNING:  # converged_episode compares with A*'s cost, found within half the budget
-                options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
-            result = solve(model, deadline.remaining(), progress=progress, **options)
-            clear_progress(progress)
-    except BudgetExceeded as exc:  # ran out outside a solver's own checks (compiling, a heuristic's table, ...)
-        result = exceeded_result(solver, exc.which, deadline)
+    from ..run import Request, run
+    from ..solvers import Budget
+    given, spell = solver_given(solver_options)
+
+    def load():
+        model = compile_model(dungeon, goal)
+        if output:
+            from ..atomic import check_writable
+            check_writable(output)   # before a long solve, not after it
+        return model
+
+    progress = progress_enabled()
+    ran = run(Request(load, solver, given, Budget(max_states, time_limit, max_memory), progress, spell=spell))
+    clear_progress(progress)
+    result, model = ran.result, ran.model
     if output and result.solved:
         write_output(output, "".join(a + "\n" for a in result.plan))
     name, path, goal_text = (dungeon, dungeon, goal) if model is None else (model.name, model.path, model.goal_text)

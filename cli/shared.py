@@ -7,6 +7,7 @@ from __future__ import annotations
 import contextlib
 import json
 import sys
+from typing import Callable
 
 import click
 
@@ -170,8 +171,15 @@ def solver_flags(command=None, *, skip: tuple = ()):
 def solver_request(solver: str, kwargs: dict) -> dict:
     """The checked keyword options for `solver` from a command's `opt_*` and
     `extra_options` parameters (popped from `kwargs`)."""
-    from ..errors import BccError
     from ..solvers.options import check_options
+    return check_options(solver, *solver_given(kwargs))
+
+
+def solver_given(kwargs: dict) -> tuple[dict, Callable[[str], str]]:
+    """(option name -> value as typed, how the command line spells each name) from a
+    command's `opt_*` and `extra_options` parameters (popped from `kwargs`): what a
+    `bcc.run.Request` takes, checked by the run."""
+    from ..errors import BccError
     given = {name[4:]: kwargs.pop(name) for name in list(kwargs) if name.startswith("opt_")}
     spelled = {name: flag(name) for name in given}
     for item in kwargs.pop("extra_options", ()):
@@ -182,4 +190,4 @@ def solver_request(solver: str, kwargs: dict) -> dict:
         if given.get(name) is not None:
             raise BccError(f"-O {name}: given twice")
         given[name], spelled[name] = value, f"-O {name}"
-    return check_options(solver, given, lambda name: spelled.get(name, flag(name)))
+    return given, lambda name: spelled.get(name, flag(name))

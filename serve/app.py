@@ -155,10 +155,11 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
     @app.post("/solve", status_code=202, response_model=JobCreated, responses={**ERRORS, 503: {"model": ErrorBody}},
               summary="Queue a solve; poll GET /jobs/{id}")
     def solve(req: SolveRequest):
-        from .options import solver_options
+        from .options import given_options, solver_options
         ref = parse_ref(req.dungeon)
         report = compiled.report(ref, req.goal)   # a malformed dungeon is a 400 now, not a failed job
-        options = solver_options(req)
+        solver_options(req)                       # so are bad options; the job's run checks them again
+        options = {name: value for name, value in given_options(req).items() if value is not None}
         memory = min(req.max_memory_mb or settings.job_memory_mb, settings.job_memory_mb)
         time_limit = min(req.time_limit, settings.max_time_limit)
         spec = {"ref": {"name": ref.name, "text": ref.text}, "goal": req.goal, "solver": req.solver,

@@ -13,7 +13,12 @@ def option_fields(request_class) -> tuple[str, ...]:
     return tuple(name for name in request_class.model_fields if name not in NOT_OPTIONS)
 
 
+def given_options(req) -> dict:
+    """The solver options `req` carries, by name as declared (None: not given)."""
+    return {name: getattr(req, name) for name in option_fields(type(req))}
+
+
 def solver_options(req) -> dict:
     """The keyword options for the solver named in `req`; BccError for an unknown solver, an
     option it does not take, or a bad value."""
-    return check_options(req.solver, {name: getattr(req, name) for name in option_fields(type(req))})
+    return check_options(req.solver, given_options(req))

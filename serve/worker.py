@@ -12,9 +12,9 @@ from __future__ import annotations
 import os
 
 from ..errors import BccError, ModelError
-from ..solvers import LEARNING, Budget, get_solver, optimal_cost
+from ..run import Request, run
+from ..solvers import Budget
 from ..solvers.memory import cap_growth, current_rss_mb
-from ..solvers.limits import Deadline
 from .posted import DungeonRef, compile_ref, public_error
 # Imported here so the fork server preloads them: a job never pays for these imports.
 from ..solvers import astar, bfs  # noqa: F401
@@ -43,15 +43,12 @@ def compile_task(spec: dict, rss_ceiling: float) -> dict:
 
 
 def solve_task(spec: dict, rss_ceiling: float) -> dict:
+    """A solve, the one way every edge runs one (bcc/run); this process already caps its
+    own memory (`limit_memory`), so the run adds no hard limits of its own."""
     model = load_model(spec)
-    solve = get_solver(spec.get("solver", "astar"))
-    deadline = Deadline(Budget(max_states=spec.get("max_states"), time_limit=spec.get("time_limit"),
-                               max_memory_mb=rss_ceiling))
-    options = dict(spec.get("options") or {})
-    if spec.get("solver") in LEARNING:  # converged_episode is measured against A*'s cost, in half the budget
-        options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
-    result = solve(model, deadline.remaining(), **options)
-    return {"dungeon": model.name, "goal": model.goal_text, **result.to_json()}
+    ran = run(Request(lambda: model, spec.get("solver", "astar"), dict(spec.get("options") or {}),
+                      Budget(spec.get("max_states"), spec.get("time_limit"), rss_ceiling), hard=False))
+    return {"dungeon": model.name, "goal": model.goal_text, **ran.result.to_json()}
 
 
 TASKS = {"compile": compile_task, "solve": solve_task}

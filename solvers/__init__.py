@@ -25,14 +25,12 @@ BUILTIN = {
     "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline"),
 }
 
-__all__ = ["Budget", "Result", "check_options", "describe_solvers", "get_solver", "list_solvers", "optimal_cost",
-           "LEARNING"]
-
-LEARNING = ("rmax", "qlearning")   # learn from episodes; report `converged_episode` against A*
+__all__ = ["Budget", "Result", "check_options", "describe_solvers", "get_solver", "list_solvers", "optimal_cost"]
 
 
 def optimal_cost(model, budget: Budget | None = None) -> int | None:
-    """A*'s cost, the yardstick of a learning solver's `converged_episode` (None when A*
+    """A*'s cost, the yardstick of a learning solver's `converged_episode` (the run path,
+    bcc/run, gives it to every solver that declares `optimal_cost`; None when A*
     finds no plan within `budget`: by default 60 s and half the RAM). Callers pass a share
     of the user's own budget, so the yardstick never outlives the command's limits."""
     if budget is None:

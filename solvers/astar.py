@@ -28,7 +28,7 @@ import heapq
 import math
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result
+from .base import Budget, Meter, Result
 from ..heuristics.position import position_blind
 from ..heuristics.registry import HEURISTICS, make, serves
 from .layers import layered
@@ -45,20 +45,20 @@ def weight_option(default: float) -> Option:
 
 @declare(heuristic_option("auto"), weight_option(1.0), optimal=True)
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", weight: float = 1.0,
-          name: str = "astar", **options) -> Result:
-    meter = Meter(budget, progress)
-    mask = meter.mask
+          **options) -> Result:
+    return _search(model, Meter(budget, progress, "astar"), heuristic, weight)
+
+
+def _choose(model: Model, heuristic: str, time_limit: float | None) -> tuple:
+    """(h, its name, whether `auto` may still switch to the pattern database)."""
     switching = heuristic == "auto"
     used = "manhattan" if switching else heuristic
-    h = None
     if switching and model.data("counting_wanted"):
         # The goal needs cells of the grid changed: the counting abstraction sees that (and
         # the agent's position, which it keeps); past its limits, the choices below.
-        h = make("counting", model, budget.time_limit)
-        if getattr(h, "fallback", None):
-            h = None
-        else:
-            switching, used = False, "counting"
+        h = make("counting", model, time_limit)
+        if not getattr(h, "fallback", None):
+            return h, "counting", False
     if switching and model.goal_positions is None and model.data("pattern_database") is None:
         # No agent position (e.g. imported PDDL): LM-cut on the relaxed view if it serves the model.
         switching, used = False, "lmcut" if serves("lmcut", model) else "blind"
@@ -66,8 +66,13 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
         # The goal does not pin the agent's position: manhattan and the pattern database
         # are 0 everywhere, so they would only slow a blind search down.
         switching, used = False, "blind"
-    if h is None:
-        h = make(used, model)
+    return make(used, model), used, switching
+
+
+def _search(model: Model, meter: Meter, heuristic: str, weight: float) -> Result:
+    """A* (weight 1) or weighted A* under `meter`, which names the solver."""
+    name, budget, mask = meter.solver, meter.budget, meter.mask
+    h, used, switching = _choose(model, heuristic, budget.time_limit)
     zero = used == "blind"
     if zero and len(set(model.action_costs)) <= 1:
         return _layered(model, meter, name)
@@ -115,11 +120,10 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
             return result(solved=True, status="solved", plan=plan, cost=cost, expanded=expanded, generated=generated)
         expanded += 1
         if not expanded & mask or max_states is not None and len(nodes) > max_states:
-            which = meter.check(expanded, generated, len(nodes))
+            stopped = meter.stop(expanded, generated, len(nodes), heuristic=used, initial_h=h0)
+            if stopped:
+                return stopped
             mask = meter.mask
-            if which:
-                return budget_result(name, which, meter, expanded, generated, len(nodes), heuristic=used,
-                                     initial_h=h0)
             if switching and expanded >= SWITCH_AFTER:
                 switching = False
                 h = make("pdb", model)
@@ -204,6 +208,7 @@ def _open_list(states: list, nodes: dict, h, weight: float, packed: bool) -> tup
 
 
 @declare(heuristic_option("auto"), weight_option(2.0))
-def solve_weighted(model: Model, budget: Budget, progress=None, weight: float = 2.0, **options) -> Result:
+def solve_weighted(model: Model, budget: Budget, progress=None, heuristic: str = "auto", weight: float = 2.0,
+                   **options) -> Result:
     """Weighted A* (default w = 2): usually much faster, cost at most w x optimal."""
-    return solve(model, budget, progress, weight=weight, name="wastar", **options)
+    return _search(model, Meter(budget, progress, "wastar"), heuristic, weight)

@@ -66,14 +66,29 @@ def table_growth_mb(stored: int, growth: int, tables: int = 2) -> float:
 
 
 class Meter:
-    """Time, memory and progress bookkeeping for a search loop."""
+    """Time, memory and progress bookkeeping for a search loop, and its one budget check.
+
+    Every loop calls `stop` the same way, on the expansions `mask` picks and whenever the
+    states stored pass the state budget (exact), testing nothing else per expansion:
+
+        mask, max_states = meter.mask, budget.max_states
+        ...
+        expanded += 1
+        if not expanded & mask or max_states is not None and stored > max_states:
+            stopped = meter.stop(expanded, generated, stored, heuristic=...)
+            if stopped:
+                return stopped
+            mask = meter.mask
+
+    The learners call it every so many steps instead (a step is cheap, planning is not).
+    """
 
     # The newest Meter of this process: a run stopped outside its loop's checks (by
     # `limits.hard_limits`) still reports the counters of its last check.
     latest: "Meter | None" = None
 
-    def __init__(self, budget: Budget, progress: Callable | None = None):
-        self.budget, self.progress = budget, progress
+    def __init__(self, budget: Budget, progress: Callable | None = None, solver: str = ""):
+        self.budget, self.progress, self.solver = budget, progress, solver
         self.start = time.perf_counter()
         self.base_mb = current_rss_mb()
         self.peak_mb = self.base_mb
@@ -113,6 +128,15 @@ class Meter:
             self.last_report = now
             self.progress(expanded=expanded, generated=generated, stored=stored, seconds=now - self.start)
         return None
+
+    def stop(self, expanded: int, generated: int, stored: int, **fields) -> Result | None:
+        """`check`, and the Result to return when a budget ran out (status "budget", the
+        solver named at construction, `fields` added: the heuristic, a learner's
+        episodes), else None."""
+        which = self.check(expanded, generated, stored)
+        if which is None:
+            return None
+        return budget_result(self.solver, which, self, expanded, generated, stored, **fields)
 
     def finish(self, result: Result) -> Result:
         result.seconds = round(self.elapsed(), 6)

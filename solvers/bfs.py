@@ -18,7 +18,7 @@ from .options import declare
 
 @declare(optimal=True)   # no options; optimal for unit costs
 def solve(model: Model, budget: Budget, progress=None, **options) -> Result:
-    meter = Meter(budget, progress)
+    meter = Meter(budget, progress, "bfs")
     if model.is_goal(model.initial):
         return meter.finish(Result(solver="bfs", solved=True, status="solved", plan=[], cost=0, expanded=0,
                                    generated=1, stored=1))

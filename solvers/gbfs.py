@@ -20,7 +20,7 @@ import heapq
 import math
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result, extract_plan
+from .base import Budget, Meter, Result, extract_plan
 from ..heuristics.registry import HEURISTICS, make, serves
 from .options import Option, declare, heuristic_option
 
@@ -77,7 +77,7 @@ def auto_heuristic(model: Model) -> str:
                 choices=("auto", "eager", "lazy")))
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", preferred: bool = True,
           evaluation: str = "auto", **options) -> Result:
-    meter = Meter(budget, progress)
+    meter = Meter(budget, progress, "gbfs")
     if heuristic == "auto":
         heuristic = auto_heuristic(model)
     h = make(heuristic, model)
@@ -96,7 +96,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
     open_lists = _OpenLists(h0, start)
     closed = set()
     expanded = generated = 0
-    mask = meter.mask
+    mask, max_states = meter.mask, budget.max_states
     while open_lists:
         state = open_lists.pop()
         if state in closed:
@@ -108,11 +108,11 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "auto", 
                                        expanded=expanded, generated=generated, stored=len(parents),
                                        heuristic=heuristic, initial_h=h0))
         expanded += 1
-        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
-            which = meter.check(expanded, generated, len(parents))
+        if not expanded & mask or max_states is not None and len(parents) > max_states:
+            stopped = meter.stop(expanded, generated, len(parents))
+            if stopped:
+                return stopped
             mask = meter.mask
-            if which:
-                return budget_result("gbfs", which, meter, expanded, generated, len(parents))
         prefer = pref_of.pop(state, frozenset()) if pref_of is not None else frozenset()
         for action, nxt in model.successors(state):
             generated += 1
@@ -148,7 +148,7 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
     open_lists = _OpenLists(h0, start)
     closed = set()
     expanded = generated = 0
-    mask = meter.mask
+    mask, max_states = meter.mask, budget.max_states
     while open_lists:
         state = open_lists.pop()
         if state in closed:
@@ -167,11 +167,11 @@ def _lazy(model: Model, budget: Budget, meter: Meter, h, helpful, heuristic: str
             continue
         open_lists.progress(hs)
         expanded += 1
-        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
-            which = meter.check(expanded, generated, len(parents))
+        if not expanded & mask or max_states is not None and len(parents) > max_states:
+            stopped = meter.stop(expanded, generated, len(parents))
+            if stopped:
+                return stopped
             mask = meter.mask
-            if which:
-                return budget_result("gbfs", which, meter, expanded, generated, len(parents))
         for action, nxt in model.successors(state):
             generated += 1
             if nxt in parents or model.is_failure(nxt):

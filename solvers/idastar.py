@@ -10,19 +10,19 @@ from __future__ import annotations
 import math
 
 from ..model import Model
-from .base import Budget, Meter, Result
+from .base import Budget, Meter, Result, budget_result
 from ..heuristics.registry import make
 from .options import declare, heuristic_option
 
 
 class _Stop(Exception):
-    def __init__(self, which):
-        self.which = which
+    def __init__(self, result: Result):
+        self.result = result
 
 
 @declare(heuristic_option("pdb"), optimal=True)
 def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", **options) -> Result:
-    meter = Meter(budget, progress)
+    meter = Meter(budget, progress, "idastar")
     h = make("pdb" if heuristic == "auto" else heuristic, model)
     # search successors: self-loops and failure states (unless goals) are left out there
     costs, successors, is_goal = model.action_costs, model.search_successors(), model.is_goal
@@ -39,12 +39,14 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
         if is_goal(state):
             return True
         counters["expanded"] += 1
-        if max_states is not None and counters["expanded"] > max_states:
-            raise _Stop("max_states")
-        if not counters["expanded"] & meter.mask:
-            which = meter.check(counters["expanded"], counters["generated"], len(path_states))
-            if which:
-                raise _Stop(which)
+        expanded = counters["expanded"]
+        if max_states is not None and expanded > max_states:   # it stores only its path: the budget counts expansions
+            raise _Stop(budget_result("idastar", "max_states", meter, expanded, counters["generated"],
+                                      counters["depth"], heuristic=heuristic, initial_h=h0))
+        if not expanded & meter.mask:
+            stopped = meter.stop(expanded, counters["generated"], counters["depth"], heuristic=heuristic, initial_h=h0)
+            if stopped:
+                raise _Stop(stopped)
         smallest = math.inf
         children = []
         nexts = successors(state)
@@ -84,11 +86,7 @@ def solve(model: Model, budget: Budget, progress=None, heuristic: str = "pdb", *
                                            heuristic=heuristic, initial_h=h0))
             bound = t
     except _Stop as stop:
-        from .base import BUDGET_WORDS
-        return meter.finish(Result(solver="idastar", solved=False, status="budget", expanded=counters["expanded"],
-                                   generated=counters["generated"], stored=counters["depth"], budget=stop.which,
-                                   heuristic=heuristic, initial_h=h0,
-                                   message=f"stopped: {BUDGET_WORDS[stop.which]} ran out"))
+        return stop.result
     return meter.finish(Result(solver="idastar", solved=False, status="no_solution", expanded=counters["expanded"],
                                generated=counters["generated"], stored=counters["depth"], heuristic=heuristic,
                                initial_h=h0, message="no plan exists: no path within any bound"))

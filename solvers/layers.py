@@ -16,7 +16,7 @@ more than one expansion's next states.
 from __future__ import annotations
 
 from ..model import Model
-from .base import Meter, Result, budget_result, parent_plan
+from .base import Meter, Result, parent_plan
 
 
 def run_length(meter: Meter, max_states: int | None, stored: int, widest: int) -> int:
@@ -64,9 +64,9 @@ def layered(model: Model, meter: Meter, name: str, lifo: bool, **fields) -> Resu
                                                stored=len(parents), **fields))
                 expanded += len(chunk)
                 generated += k
-                which = meter.check(expanded, generated, len(parents))
-                if which:
-                    return budget_result(name, which, meter, expanded, generated, len(parents), **fields)
+                stopped = meter.stop(expanded, generated, len(parents), **fields)
+                if stopped:
+                    return stopped
         layer = below
     return meter.finish(Result(solver=name, solved=False, status="no_solution", expanded=expanded,
                                generated=generated, stored=len(parents), **fields,

@@ -8,6 +8,11 @@ checks a request against that declaration for every caller (`bcc solve`, `POST /
 An option is named as users spell it: `--known-after` on the command line, `known_after`
 in JSON and sweep files; `keyword` is the `solve` argument when it differs. A solver that
 declares nothing (a plugin written before declarations) takes no options.
+
+An `internal` option is a keyword bcc itself (or a Python caller) passes, never a user:
+it is declared so that the declaration lists every keyword a solver takes, but requests
+cannot set it and `bcc solvers` does not list it. `optimal_cost` is one: the run path
+(bcc/run) gives A*'s cost to every solver that declares it.
 """
 from __future__ import annotations
 
@@ -31,6 +36,7 @@ class Option:
     high_open: bool = False
     choices: tuple | Callable[[], tuple] | None = None   # a callable: choices known only at run time
     keyword: str | None = None     # the solve() keyword, when it is not `name`
+    internal: bool = False         # passed by bcc or a Python caller, never by a user (see above)
 
     @property
     def argument(self) -> str:
@@ -131,7 +137,13 @@ def unavailable(solve) -> str | None:
 
 
 def options_of(solve) -> tuple[Option, ...]:
-    return tuple(getattr(solve, "options", ()))
+    """The options users may set (internal ones left out)."""
+    return tuple(o for o in getattr(solve, "options", ()) if not o.internal)
+
+
+def keywords_of(solve) -> tuple[str, ...]:
+    """Every keyword `solve` declares it takes, internal ones included."""
+    return tuple(o.argument for o in getattr(solve, "options", ()))
 
 
 def check_options(solver: str, given: dict, spell: Callable[[str], str] = lambda name: f"`{name}`") -> dict:
@@ -154,9 +166,10 @@ def check_options(solver: str, given: dict, spell: Callable[[str], str] = lambda
 
 def check_arguments(solve, arguments: dict) -> None:
     """For a solver's own use, when called from Python without `check_options`: each
-    declared option among its keyword `arguments` is checked against the declaration."""
-    for option in options_of(solve):
-        if option.argument in arguments:
+    declared option among its keyword `arguments` (`locals()` at the top of `solve`) is
+    checked against the declaration; None stands for not given."""
+    for option in getattr(solve, "options", ()):
+        if arguments.get(option.argument) is not None:
             option.check(arguments[option.argument], f"{option.name} ({solve.__module__})")
 
 

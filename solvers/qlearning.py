@@ -33,7 +33,7 @@ from __future__ import annotations
 import random
 
 from ..model import Model
-from .base import Budget, Meter, Result, budget_result, without_actions
+from .base import Budget, Meter, Result, without_actions
 from .options import Option, check_arguments, declare
 
 CHECK_STEPS = 1024   # environment steps between budget checks
@@ -66,13 +66,15 @@ def greedy_rollout(model: Model, q: dict, max_steps: int, q_init: float = 0.0) -
     Option("alpha", float, 0.5, "learning rate", low=0, high=1, low_open=True),
     Option("epsilon", float, 0.1, "exploration rate (epsilon-greedy)", low=0, high=1),
     Option("max_steps", int, 200, "steps before an episode is cut", low=1),
+    Option("q_init", float, 0.0, "the value of a (state, action) never tried (0: optimistic)", internal=True),
+    Option("optimal_cost", int, None, "A*'s cost: converged_episode is the first episode from which the greedy "
+           "plan is this long", low=0, internal=True),
 )
 def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed: int = 0, alpha: float = 0.5,
           gamma: float = 0.99, epsilon: float = 0.1, max_steps: int = 200, q_init: float = 0.0,
           optimal_cost: int | None = None, **options) -> Result:
-    check_arguments(solve, {"episodes": episodes, "seed": seed, "alpha": alpha, "gamma": gamma, "epsilon": epsilon,
-                            "max_steps": max_steps})
-    meter = Meter(budget, progress)
+    check_arguments(solve, locals())
+    meter = Meter(budget, progress, "qlearning")
     rng = random.Random(seed)
     n_actions = len(model.action_names)
     actions = range(n_actions)
@@ -89,7 +91,6 @@ def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed
     def values(s):
         return [q.get((s, a), q_init) for a in actions]
 
-    stopped = None
     for episode in range(episodes):
         s, ret, kind, steps = model.initial, 0.0, None, 0
         if model.is_goal(s):
@@ -116,18 +117,13 @@ def solve(model: Model, budget: Budget, progress=None, episodes: int = 200, seed
             steps_total += 1
             s = n
             if steps_total % CHECK_STEPS == 0:
-                stopped = meter.check(steps_total, steps_total, len(seen))
+                stopped = meter.stop(steps_total, steps_total, len(seen), episodes=history)
                 if stopped:
-                    break
-        if stopped:
-            break
+                    return stopped
         plan, ok = greedy_rollout(model, q, max_steps, q_init)
         greedy_costs.append(sum(model.action_costs[a] for a in plan) if ok else None)
         history.append({"episode": episode + 1, "steps": steps, "return": ret, "success": kind == "goal",
                         "greedy_steps": len(plan) if ok else None})
-
-    if stopped:
-        return budget_result("qlearning", stopped, meter, steps_total, steps_total, len(seen), episodes=history)
 
     plan, ok = greedy_rollout(model, q, max_steps, q_init)
     cost = sum(model.action_costs[a] for a in plan) if ok else None

@@ -184,13 +184,16 @@ def _steps_left(distance, longest_move: int):
     Option("known_after", int, 1, "visits before a (state, action) is known (1: the world is deterministic)",
            low=1, keyword="m"),
     Option("max_steps", int, 1000, "steps before an episode is cut", low=1),
+    Option("optimal_cost", int, None, "A*'s cost: converged_episode is the first episode from which all are this "
+           "long", low=0, internal=True),
+    Option("all_actions", bool, False, "learn over every action, not only those that can matter for the goal",
+           internal=True),
 )
 def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular", episodes: int = 10,
           seed: int = 0, gamma: float = 0.99, delta: float = 0.01, m: int = 1, max_steps: int = 1000,
           optimal_cost: int | None = None, all_actions: bool = False, **options) -> Result:
-    check_arguments(solve, {"learner": learner, "episodes": episodes, "seed": seed, "gamma": gamma, "delta": delta,
-                            "m": m, "max_steps": max_steps})
-    meter = Meter(budget, progress)
+    check_arguments(solve, locals())
+    meter = Meter(budget, progress, "rmax")
     rng = random.Random(seed)
     know = LEARNERS[learner](model, m)
     actions = list(range(len(model.action_names))) if all_actions or not model.search_actions \
@@ -225,10 +228,9 @@ def solve(model: Model, budget: Budget, progress=None, learner: str = "tabular",
             steps_total += 1
             if steps_total % 256 == 0 or replanned:  # planning can be slow: check after it too
                 replanned = False
-                which = meter.check(steps_total, steps_total, 0)
-                if which:
-                    from .base import budget_result
-                    return budget_result("rmax", which, meter, steps_total, steps_total, 0, episodes=history)
+                stopped = meter.stop(steps_total, steps_total, 0, episodes=history)
+                if stopped:
+                    return stopped
             s, kind = n, outcome
             if kind is not None:
                 break

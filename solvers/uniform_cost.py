@@ -16,7 +16,7 @@ from __future__ import annotations
 import heapq
 
 from ..model import Model
-from .base import Meter, Result, budget_result, parent_plan
+from .base import Meter, Result, parent_plan
 from .layers import run_length
 
 
@@ -49,9 +49,9 @@ def uniform_cost(model: Model, meter: Meter, name: str, expander, levels: tuple)
                 at += len(chunk)
                 generated += expander(chunk, g, nodes, outs)
                 expanded += len(chunk)
-                which = meter.check(expanded, generated, len(nodes))
-                if which:
-                    return budget_result(name, which, meter, expanded, generated, len(nodes), **fields)
+                stopped = meter.stop(expanded, generated, len(nodes), **fields)
+                if stopped:
+                    return stopped
             for cost, out in zip(levels, outs):
                 if cost and out:
                     bucket = buckets.get(g + cost)

@@ -20,13 +20,14 @@ ROOT = Path(__file__).resolve().parent.parent
 PDDL_EXPORT = {"task.py", "writer.py", "domains.py"}
 
 
-def test_compiler_heuristics_solvers_and_pddl_front_end_know_no_minecraft_words():
+def test_compiler_heuristics_solvers_run_path_and_pddl_front_end_know_no_minecraft_words():
     words = re.compile(r"lava|pickaxe|gold|bedrock|burlap|minecraft|agentOnBlock|stone|chair", re.I)
-    paths = [p for folder in ("compiler", "heuristics", "solvers", "pddl_io") for p in (ROOT / folder).glob("*.py")
+    paths = [p for folder in ("compiler", "heuristics", "solvers", "run", "pddl_io") for p in (ROOT / folder).glob("*.py")
              if not (folder == "pddl_io" and p.name in PDDL_EXPORT)]
     assert len(paths) > 40
     assert {"registry.py", "relaxed.py", "counting.py", "patterns.py"} <= {p.name for p in paths
                                                                           if p.parent.name == "heuristics"}
+    assert {"solve.py", "children.py", "pool.py"} <= {p.name for p in paths if p.parent.name == "run"}
     for path in paths:
         for n, line in enumerate(path.read_text().splitlines(), 1):
             assert not words.search(line), f"{path.parent.name}/{path.name}:{n}: {line.strip()}"

@@ -17,7 +17,7 @@ import pytest
 from bcc.cli.shared import SOLVER_FLAGS
 from bcc.simulate import replay
 from bcc.solvers import BUILTIN, Budget, Result, get_solver, list_solvers
-from bcc.solvers.options import Option, check_options, options_of, unavailable
+from bcc.solvers.options import Option, check_options, keywords_of, options_of, unavailable
 from conftest import compiled
 
 SOLVERS = list(list_solvers())
@@ -48,6 +48,20 @@ def test_signature(name):
         if param is not None and param.default is not inspect.Parameter.empty and param.default is not None:
             assert param.default == option.default, f"{name}: {option.name} declared {option.default}, " \
                                                     f"solve's default {param.default}"
+
+
+@pytest.mark.parametrize("name", [n for n in SOLVERS if n in BUILTIN])
+def test_the_declaration_lists_every_keyword(name):
+    """A built-in solver takes no keyword it does not declare (those only bcc passes, such
+    as the run path's optimal_cost, are declared `internal`): the declaration is the
+    whole interface, and each declared default is the signature's."""
+    solve = get_solver(name)
+    params = {p.name: p.default for p in inspect.signature(solve).parameters.values()
+              if p.kind is not inspect.Parameter.VAR_KEYWORD}
+    keywords = set(params) - {"model", "budget", "progress"}
+    assert keywords == set(keywords_of(solve)), name
+    for option in solve.options:
+        assert params[option.argument] == option.default, f"{name}: {option.name}"
 
 
 @pytest.mark.parametrize("name", [n for n in SOLVERS if n in BUILTIN])

@@ -1,0 +1,69 @@
+"""The one run path (bcc/run): what every edge gets from it, whoever calls it."""
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from bcc.errors import BccError
+from bcc.run import Request, run
+from bcc.solvers import Budget, get_solver
+from bcc.solvers.base import Meter
+
+from conftest import compiled
+
+
+def test_bad_options_are_refused_before_the_model_is_loaded():
+    loaded = []
+    with pytest.raises(BccError, match="--weight must be a number >= 1"):
+        run(Request(lambda: loaded.append(1), "astar", {"weight": "0.5"}, spell=lambda name: f"--{name}"))
+    with pytest.raises(BccError, match="does not apply to bfs"):
+        run(Request(lambda: loaded.append(1), "bfs", {"weight": "2"}))
+    assert not loaded
+
+
+def test_internal_keywords_cannot_be_requested():
+    # optimal_cost is declared (internal): the run path sets it, a request cannot
+    with pytest.raises(BccError, match="does not apply to rmax"):
+        run(Request(lambda: compiled("grid"), "rmax", {"optimal_cost": 3}))
+
+
+def test_a_learner_gets_the_reference_cost_and_a_search_does_not():
+    model = compiled("grid")
+    astar = get_solver("astar")(model, Budget(time_limit=30))
+    ran = run(Request(lambda: model, "rmax", {"model": "oo", "episodes": "6", "seed": "0"}, Budget(time_limit=60)))
+    assert ran.model is model and ran.result.solved
+    # converged_episode is measured against A*'s cost: the first episode from which all are that long
+    steps = [e["steps"] for e in ran.result.episodes]
+    assert ran.result.converged_episode is not None
+    assert all(s == astar.cost for s in steps[ran.result.converged_episode:])
+    assert run(Request(lambda: model, "astar")).result.converged_episode is None
+
+
+def test_the_memory_budget_defaults_to_half_the_machine():
+    seen = {}
+
+    def spy(model, budget, progress=None, **options):
+        seen["budget"] = budget
+        return get_solver("bfs")(model, budget)
+    run(Request(lambda: compiled("grid"), "bfs", solve=spy))
+    assert seen["budget"].max_memory_mb == pytest.approx(Budget.default().max_memory_mb)
+
+
+def test_a_budget_spent_while_loading_is_a_result():
+    def slow():
+        deadline = time.perf_counter() + 5
+        while time.perf_counter() < deadline:   # a compile that outlives the time limit
+            pass
+    ran = run(Request(slow, "astar", budget=Budget(time_limit=0.2)))
+    assert ran.model is None
+    assert ran.result.status == "budget" and ran.result.budget == "time_limit" and not ran.result.solved
+
+
+def test_the_meter_stops_with_the_solvers_result():
+    meter = Meter(Budget(max_states=10), solver="mine")
+    assert meter.stop(1, 5, 10) is None
+    stopped = meter.stop(2, 9, 11, heuristic="h")
+    assert stopped.solver == "mine" and stopped.status == "budget" and stopped.budget == "max_states"
+    assert (stopped.expanded, stopped.generated, stopped.stored, stopped.heuristic) == (2, 9, 11, "h")
+    assert "--max-states" in stopped.message
