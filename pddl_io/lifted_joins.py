@@ -140,16 +140,30 @@ class JoinCompiler:
 
     def join(self, steps, names: dict, types: dict, lines: list, indent: str, success: list, params=()):
         """Nested loops and tests for `steps`; `success` lines run at the innermost level
-        (`{var}` in them is replaced by the variable's local)."""
+        (`{var}` in them is replaced by the variable's local). Inside a loop a failed test
+        is `continue`; before the first loop, consecutive tests make one `if` (a goal of a
+        hundred conjuncts would otherwise nest past Python's limit of 100 blocks)."""
         depth = indent
+        loops = 0
+        pending: list = []
+
+        def flush():
+            nonlocal depth
+            if pending:
+                lines.append(f"{depth}if {' and '.join(pending)}:")
+                depth += "    "
+                pending.clear()
+
         for step in steps:
             if step[0] == "enum":
+                flush()
                 v = step[1]
                 names[v] = local = f"v{len(names)}_{len(lines)}"
                 dom = self.table(self.task.domain(types[v]))
                 used = [names[u] for u in names if u != v]
                 lines.append(f"{depth}for {local} in {dom}:")
                 depth += "    "
+                loops += 1
                 if not self.symmetric(types[v]):
                     continue
                 lines.append(f"{depth}if not ALLOWED({local}, s, ({''.join(u + ', ' for u in used)})):")
@@ -158,9 +172,14 @@ class JoinCompiler:
             f = step[1]
             unbound = sorted(free_vars(f) - set(names))
             if not unbound:
-                lines.append(f"{depth}if {self.expr(f, names, types)}:")
-                depth += "    "
+                test = f"({self.expr(f, names, types)})"
+                if loops:
+                    lines.append(f"{depth}if not {test}:")
+                    lines.append(f"{depth}    continue")
+                else:
+                    pending.append(test)
                 continue
+            flush()
             if f[0] == "=":
                 v = unbound[0]
                 other = f[2] if f[1] == v else f[1]
@@ -171,6 +190,8 @@ class JoinCompiler:
                 depth += "    "
                 continue
             depth = self.atom_loop(f, names, types, lines, depth)
+            loops += 1
+        flush()
         for line in success:
             for v in params:
                 line = line.replace("{" + v + "}", names[v])
