@@ -172,3 +172,12 @@ def _add_mineplanner():
 
 
 _add_mineplanner()
+
+
+def _with_hddl():
+    """`bcc import hddl` joins `bcc import` (its module imports nothing heavy)."""
+    from .hddl import import_hddl_cmd
+    import_group.add_command(import_hddl_cmd)
+
+
+_with_hddl()

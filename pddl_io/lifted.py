@@ -171,7 +171,12 @@ def _define(tree, kind: str, path: str) -> SList:
 
 # ---- the domain ----------------------------------------------------------------------
 def read_domain(path: str) -> Domain:
-    d = _define(read_sexpr(path), "domain", path)
+    return domain_from(_define(read_sexpr(path), "domain", path), path)
+
+
+def domain_from(d: SList, path: str, requirements: frozenset = frozenset()) -> Domain:
+    """The domain of a `(define (domain ...) ...)` list; `requirements` are further ones
+    a front end built on this one accepts (HDDL's :hierarchy)."""
     r = Reader(path)
     dom = Domain(name=r.name(d[1][1], "the domain's name"), path=path, parents={"object": ()}, constants={},
                  predicates={}, functions={}, actions=[])
@@ -191,7 +196,7 @@ def read_domain(path: str) -> Domain:
             r.fail(head, f"a second {head} section")
         sections[head] = sec
     for req in sections.get(":requirements", [None])[1:]:
-        if isinstance(req, SList) or req.type != "KEYWORD" or req not in KNOWN_REQUIREMENTS:
+        if isinstance(req, SList) or req.type != "KEYWORD" or req not in KNOWN_REQUIREMENTS | requirements:
             raise unsupported(req, f"requirement {_show(req)}", path)
     if ":types" in sections:
         for t, parents in r.typed_list(sections[":types"][1:], "type", None):
@@ -558,7 +563,13 @@ class Formulas:
 
 # ---- the problem ---------------------------------------------------------------------
 def read_problem(path: str, dom: Domain) -> Problem:
-    d = _define(read_sexpr(path), "problem", path)
+    return problem_from(_define(read_sexpr(path), "problem", path), path, dom)
+
+
+def problem_from(d: SList, path: str, dom: Domain, requirements: frozenset = frozenset(),
+                 goal_needed: bool = True) -> Problem:
+    """The problem of a `(define (problem ...) ...)` list; an HTN problem may have no
+    :goal (`goal_needed` False: its goal is then true)."""
     r = Reader(path)
     prob = Problem(name=r.name(d[1][1], "the problem's name"), path=path, objects=dict(dom.constants), init=set(),
                    function_values={}, goal=TRUE, metric=False)
@@ -581,7 +592,7 @@ def read_problem(path: str, dom: Domain) -> Problem:
             r.fail(sec, "expected (:domain NAME)")
         r.name(sec[1], "the domain's name")
     for req in sections.get(":requirements", [None])[1:]:
-        if isinstance(req, SList) or req.type != "KEYWORD" or req not in KNOWN_REQUIREMENTS:
+        if isinstance(req, SList) or req.type != "KEYWORD" or req not in KNOWN_REQUIREMENTS | requirements:
             raise unsupported(req, f"requirement {_show(req)}", path)
     if ":objects" in sections:
         for o, t in r.typed_list(sections[":objects"][1:], "object", dom.parents):
@@ -610,11 +621,17 @@ def read_problem(path: str, dom: Domain) -> Problem:
             r.fail(fact, f"{a[1]!r} is a derived predicate: it holds where its rules say, never by :init")
         prob.init.add((a[1], a[2]))  # types are not checked here: Fast Downward does not either
     if ":goal" not in sections:
+        if not goal_needed:
+            return _metric(r, sections, prob, path)
         r.fail(d, "the problem has no :goal")
     g = sections[":goal"]
     if len(g) != 2:
         r.fail(g, ":goal takes one condition")
     prob.goal = inline_derived(f.formula(g[1], {}), dom, itertools.count(), {}, prob.objects)
+    return _metric(r, sections, prob, path)
+
+
+def _metric(r: Reader, sections: dict, prob: Problem, path: str) -> Problem:
     if ":metric" in sections:
         m = sections[":metric"]
         if len(m) == 3 and m[1] == "minimize" and isinstance(m[2], SList) and list(m[2]) == ["total-cost"]:

@@ -50,17 +50,17 @@ def _terminals(grammar: str) -> tuple[list, set]:
     return terminals, ignored
 
 
-@functools.lru_cache(maxsize=1)
-def _scanner():
-    terminals, ignored = _terminals(GRAMMAR.read_text())
+@functools.lru_cache(maxsize=4)
+def _scanner(grammar_path: Path = GRAMMAR):
+    terminals, ignored = _terminals(grammar_path.read_text())
     parts = [f"(?P<WS>{WS})", r"(?P<LPAR>\()", r"(?P<RPAR>\))"]
     parts += [f"(?P<{name}>{regex})" for name, _, regex in terminals]
     return re.compile("|".join(parts)).match, ignored | {"WS"}
 
 
-def _scan(text: str) -> list | None:
+def _scan(text: str, grammar_path: Path = GRAMMAR) -> list | None:
     """The top-level items of `text`, or None where lark must say what is wrong."""
-    match, ignored = _scanner()
+    match, ignored = _scanner(grammar_path)
     top: list = []
     stack: list = []
     items = top
@@ -93,8 +93,8 @@ def _scan(text: str) -> list | None:
     return None if stack else top
 
 
-@functools.lru_cache(maxsize=1)
-def _parser():
+@functools.lru_cache(maxsize=4)
+def _parser(grammar_path: Path = GRAMMAR):
     from lark import Lark, Transformer
 
     class ToLists(Transformer):
@@ -106,7 +106,7 @@ def _parser():
             out.line, out.column = items[0].line, items[0].column
             return out
 
-    grammar = GRAMMAR.read_text()
+    grammar = grammar_path.read_text()
     grammar = grammar.replace('list: "(" _item* ")"', 'list: LPAR _item* ")"\nLPAR: "("')
     tables = _cached_tables(grammar)
     if tables is not None:
@@ -165,27 +165,28 @@ def _save_tables(grammar: str, parser) -> None:
         pass
 
 
-def read_sexpr(path: str) -> list:
-    """The top-level lists of a PDDL file, or a BccError at the offending position."""
+def read_sexpr(path: str, grammar_path: Path = GRAMMAR, language: str = "PDDL") -> list:
+    """The top-level lists of a PDDL file, or a BccError at the offending position. HDDL,
+    lexically PDDL, is read by the same reader with its own grammar (grammar/hddl.lark)."""
     try:
         text = Path(path).read_text(encoding="utf-8", errors="replace")
     except FileNotFoundError:
-        raise BccError("no such PDDL file", path) from None
+        raise BccError(f"no such {language} file", path) from None
     except OSError as exc:
-        raise BccError(f"cannot read PDDL: {exc.strerror or exc}", path) from None
+        raise BccError(f"cannot read {language}: {exc.strerror or exc}", path) from None
     lowered = text.lower()   # PDDL ignores case (there are no strings)
-    items = _scan(lowered)
-    return items if items is not None else parse_with_lark(text, path)
+    items = _scan(lowered, grammar_path)
+    return items if items is not None else parse_with_lark(text, path, grammar_path, language)
 
 
-def parse_with_lark(text: str, path: str) -> list:
+def parse_with_lark(text: str, path: str, grammar_path: Path = GRAMMAR, language: str = "PDDL") -> list:
     """lark's reading of `text` (the grammar's authority), or its complaint as a BccError."""
     from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
     try:
-        return _parser().parse(text.lower())
+        return _parser(grammar_path).parse(text.lower())
     except UnexpectedCharacters as exc:
         ch = text[exc.pos_in_stream] if exc.pos_in_stream is not None and exc.pos_in_stream < len(text) else "?"
-        raise BccError(f"unexpected character {ch!r} in PDDL", path, exc.line, exc.column) from None
+        raise BccError(f"unexpected character {ch!r} in {language}", path, exc.line, exc.column) from None
     except UnexpectedToken as exc:
         if exc.token.type == "$END":
             line, col = _last_open(text)
@@ -199,7 +200,8 @@ def parse_with_lark(text: str, path: str) -> list:
         line, col = _last_open(text)
         raise BccError("this '(' is never closed", path, line, col) from None
     except UnexpectedInput as exc:  # any other lark complaint still has a position
-        raise BccError("cannot read PDDL", path, getattr(exc, "line", None), getattr(exc, "column", None)) from None
+        raise BccError(f"cannot read {language}", path, getattr(exc, "line", None), getattr(exc, "column", None)) \
+            from None
 
 
 ACTION_PARTS = {":parameters", ":precondition", ":effect"}

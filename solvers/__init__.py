@@ -23,6 +23,7 @@ BUILTIN = {
     "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
     "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning: learns the dynamics from episodes"),
     "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline"),
+    "htn": ("bcc.solvers.htn:solve", "total-order HTN progression over task networks (bcc import hddl)"),
 }
 
 __all__ = ["Budget", "Result", "check_options", "describe_solvers", "get_solver", "list_solvers", "optimal_cost"]

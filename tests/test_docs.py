@@ -40,7 +40,7 @@ ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
-PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md",
+PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md", "hddl.md",
          "learning-curves.md", "add-a-heuristic.md"]
 IN_CHECKOUT = {"add-a-heuristic.md"}   # pages that change bcc's own files: followed in a copy of the checkout
 NEEDS = {"learning-curves.md": "matplotlib"}  # pages whose commands need an optional extra: page -> the module it brings
@@ -293,7 +293,7 @@ def test_add_a_heuristic_page_works_word_for_word(followed):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("page", ["grounding.md", "batch.md", "pddl.md", "learning-curves.md"])
+@pytest.mark.parametrize("page", ["grounding.md", "batch.md", "pddl.md", "hddl.md", "learning-curves.md"])
 def test_feature_pages_work_word_for_word(followed, page):
     if page not in followed:
         pytest.skip(f"docs/{page} needs the {NEEDS[page]} module (an optional extra)")

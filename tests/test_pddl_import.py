@@ -498,7 +498,8 @@ def test_every_solver_and_choice_on_an_imported_task_solves_or_says_why(solver, 
     try:
         result = get_solver(solver)(model, Budget(time_limit=20, max_states=200_000), **options)
     except BccError as exc:
-        assert "model=tabular" in exc.message, exc.message   # the one refusal: it names the alternative
+        # the refusals name the alternative: R-max's oo model, and htn, which plans task networks
+        assert "model=tabular" in exc.message or "bcc import hddl" in exc.message, exc.message
         return
     if result.solved:   # stepped, as a learner's plan may hold steps that changed nothing
         s = model.initial

@@ -31,12 +31,15 @@ def runnable(name: str):
     why = unavailable(solve)
     if why:
         pytest.skip(f"{name}: {why}")
+    if getattr(solve, "input", None) == "task network":
+        pytest.skip(f"{name} plans task networks, not dungeons (tests/test_htn.py holds it to its contract)")
     return solve
 
 
 @pytest.mark.parametrize("name", SOLVERS)
 def test_signature(name):
     solve = get_solver(name)
+    solve = getattr(solve, "__wrapped__", solve)
     params = list(inspect.signature(solve).parameters.values())
     assert [p.name for p in params[:3]] == ["model", "budget", "progress"], name
     assert params[2].default is None

@@ -1,0 +1,80 @@
+"""The `htn` solver: total-order HTN planning by progression (search.py), for the task
+networks of `bcc import hddl`.
+
+Its input is an `HtnProblem` (hddl/task.py), not a compiled dungeon: a dungeon has a goal
+and no task to decompose, so `bcc solve DUNGEON --solver htn` is refused as bad input.
+Its plan is the action sequence; `Result.decomposition` holds the decomposition tree
+(the IPC plan format's content: hddl/plan.py writes it).
+"""
+from __future__ import annotations
+
+import gc
+from dataclasses import dataclass
+
+from ...errors import BccError
+from ..base import Budget, Meter, Result, budget_result
+from ..options import declare
+from .facts import Facts
+from .search import Compiled, run_search
+
+NAME = "htn"
+
+
+@dataclass
+class HtnResult(Result):
+    decomposition: dict | None = None   # {"root": [ids], "tasks": [{id, task, method, subtasks}]}; actions: 0..n-1
+
+
+def takes_task_network(solve):
+    """Marks a solver whose input is a task network (`bcc import hddl`), not a dungeon."""
+    solve.input = "task network"
+    return solve
+
+
+@takes_task_network
+@declare()   # one configuration for every domain
+def solve(model, budget: Budget, progress=None, **options) -> Result:
+    """Total-order HTN progression: depth first over (state, task network), methods bound
+    against the state as they are applied, tried least-work-first, loops cut."""
+    from ...hddl.task import HtnProblem
+    if not isinstance(model, HtnProblem):
+        raise BccError("the htn solver plans task networks: give it an HDDL domain and problem "
+                       "(bcc import hddl DOMAIN PROBLEM)")
+    meter = Meter(budget, progress)
+    compiled = Compiled(model)
+    facts = Facts(compiled.init, compiled.fluent)
+    was = gc.isenabled()
+    gc.disable()   # the search's tuples form no cycles; a full collection would rescan them all
+    try:
+        out = run_search(compiled, facts, meter, budget)
+    finally:
+        if was:
+            gc.enable()
+    if out.status == "budget":
+        return budget_result(NAME, out.budget, meter, out.expanded, out.generated, out.stored)
+    if out.status != "solved":
+        return meter.finish(Result(solver=NAME, solved=False, status="no_solution", expanded=out.expanded,
+                                   generated=out.generated, stored=out.stored,
+                                   message="no plan exists: every decomposition was tried"))
+    plan = [_text(name, args) for _, name, args in out.plan]
+    return meter.finish(HtnResult(solver=NAME, solved=True, status="solved", plan=plan, cost=len(plan),
+                                  expanded=out.expanded, generated=out.generated, stored=out.stored,
+                                  decomposition=_tree(out)))
+
+
+
+def _text(name: str, args: tuple) -> str:
+    return "(" + " ".join((name,) + tuple(args)) + ")"
+
+
+def _tree(out) -> dict:
+    """The decomposition with the IPC format's numbering: actions 0..n-1 in plan order,
+    then the compound tasks in the order they were decomposed."""
+    ids = {uid: i for i, (uid, _, _) in enumerate(out.plan)}
+    for uid, *_ in out.decompositions[1:]:
+        ids[uid] = len(ids)
+    root = [ids[u] for u in out.decompositions[0][4]] if out.decompositions else []
+    tasks = [{"id": ids[uid], "task": " ".join((name,) + tuple(args)), "method": method,
+              "subtasks": [ids[c] for c in children]}
+             for uid, name, args, method, children in out.decompositions[1:]]
+    return {"root": root, "tasks": tasks}
