@@ -75,9 +75,9 @@ SHELVES_TEXT = SHELVES.read_text()
     ("(t2 (check ?s))", "(t2 (check ?s ?s))", "(check ?s ?s)", "check takes 1 arguments, found 2"),
     (":task (store ?i)\n    :precondition (and (on ?i bin) (free ?s))",
      ":task (check ?s)\n    :precondition (and (on ?i bin) (free ?s))", "(check ?s)", "'check' is an action"),
-    ("(free ?s))\n    :constraints", "(free ?z))\n    :constraints", "?z", "unknown variable '?z'"),
+    ("(free ?s))\n    :subtasks", "(free ?z))\n    :subtasks", "?z", "unknown variable '?z'"),
     (":method-preconditions)", ":method-preconditions :fancy)", ":fancy", "requirement ':fancy' is not supported"),
-    (":constraints (not (= ?s bin))", ":effect (not (= ?s bin))", ":effect", ":effect in a method is not supported"),
+    (":constraints (not (= ?s bin)))", ":effect (not (= ?s bin)))", ":effect", ":effect in a method is not supported"),
     ("(:task tidy :parameters ())", "(:task tidy :parameters ())\n  (:task tidy :parameters ())",
      "(:task tidy :parameters ())\n\n", "'tidy' is declared twice"),   # at the second
 ])
