@@ -48,7 +48,7 @@ def read_hddl(domain_path: str, problem_path: str) -> HtnProblem:
         names.add(m.name)
     p = _define(read_sexpr(problem_path, GRAMMAR, "HDDL"), "problem", problem_path)
     plain, htn = _split(p, (":htn",))
-    prob = problem_from(plain, problem_path, dom, REQUIREMENTS, goal_needed=False)
+    prob = problem_from(plain, problem_path, dom, REQUIREMENTS, goal_needed=False, keep_order=True)
     if len(htn) > 1:
         Reader(problem_path).fail(htn[1], "a second :htn section")
     if htn:

@@ -80,6 +80,7 @@ class Problem:
     goal: tuple
     metric: bool             # (:metric minimize (total-cost))
     where: dict = field(default_factory=dict)
+    init_order: list | None = None   # the :init atoms in file order, when asked for (HDDL's planner)
 
 
 def err(node, message: str, path: str) -> BccError:
@@ -567,9 +568,10 @@ def read_problem(path: str, dom: Domain) -> Problem:
 
 
 def problem_from(d: SList, path: str, dom: Domain, requirements: frozenset = frozenset(),
-                 goal_needed: bool = True) -> Problem:
+                 goal_needed: bool = True, keep_order: bool = False) -> Problem:
     """The problem of a `(define (problem ...) ...)` list; an HTN problem may have no
-    :goal (`goal_needed` False: its goal is then true)."""
+    :goal (`goal_needed` False: its goal is then true); `keep_order`: also list the :init
+    atoms in file order (`init_order`), for a search whose choices follow it."""
     r = Reader(path)
     prob = Problem(name=r.name(d[1][1], "the problem's name"), path=path, objects=dict(dom.constants), init=set(),
                    function_values={}, goal=TRUE, metric=False)
@@ -606,6 +608,8 @@ def problem_from(d: SList, path: str, dom: Domain, requirements: frozenset = fro
             raise err(token, f"unknown object or constant {name!r} (neither the domain's constants nor the "
                              f"objects of {path} declare it)", dom.path)
     f = Formulas(r, dom, prob.objects)
+    if keep_order:
+        prob.init_order = []
     for fact in sections.get(":init", [None])[1:]:
         fact = r.expect_list(fact, "an initial fact")
         if fact and fact[0] == "=":
@@ -619,7 +623,10 @@ def problem_from(d: SList, path: str, dom: Domain, requirements: frozenset = fro
         a = f.atom(fact, {})
         if a[0] == "atom" and a[1] in dom.derived:
             r.fail(fact, f"{a[1]!r} is a derived predicate: it holds where its rules say, never by :init")
-        prob.init.add((a[1], a[2]))  # types are not checked here: Fast Downward does not either
+        atom = (a[1], a[2])
+        if keep_order and atom not in prob.init:
+            prob.init_order.append(atom)
+        prob.init.add(atom)  # types are not checked here: Fast Downward does not either
     if ":goal" not in sections:
         if not goal_needed:
             return _metric(r, sections, prob, path)

@@ -36,7 +36,7 @@ def test_delivery_drives_to_the_package_and_on_to_its_destination():
 
 
 def test_a_loop_back_to_a_state_and_network_met_before_is_cut():
-    # By hand (facts are bound in sorted order): from b, m-via first takes b's first road, to a; from a the only road leads
+    # By hand (facts are bound in :init order): from b, m-via first takes b's first road, to a; from a the only road leads
     # back to b, where (t1 at b, get-to t1 d) is the network met at the start: cut. Back at
     # b the next road is c, and from c m-drive reaches d. Without loop detection the
     # search would drive a-b-a-b... for ever.
@@ -47,7 +47,7 @@ def test_a_loop_back_to_a_state_and_network_met_before_is_cut():
 
 def test_a_failed_subtask_backtracks_into_the_next_method_binding_and_forall_holds():
     # By hand: the :ordering puts store i1 first. store-free (3 steps) is tried before
-    # store-swept (5), on slots in sorted order: s1 passes the method's precondition but its
+    # store-swept (5), on slots in :init order: s1 passes the method's precondition but its
     # check fails (s1 is not clean), so the search backtracks to s2. tidy: tidy-done needs
     # (forall item: not in the bin), false while i2 is there; tidy-more stores i2: the only
     # free slot is s1, whose check fails again; store-swept sweeps (the forall effect cleans

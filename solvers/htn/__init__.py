@@ -42,7 +42,7 @@ def solve(model, budget: Budget, progress=None, **options) -> Result:
                        "(bcc import hddl DOMAIN PROBLEM)")
     meter = Meter(budget, progress)
     compiled = Compiled(model)
-    facts = Facts(compiled.init, compiled.fluent)
+    facts = Facts(compiled.init, compiled.patterns)
     was = gc.isenabled()
     gc.disable()   # the search's tuples form no cycles; a full collection would rescan them all
     try:

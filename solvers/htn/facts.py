@@ -15,13 +15,17 @@ from __future__ import annotations
 
 
 class Facts:
-    def __init__(self, init, fluent_preds: set):
+    def __init__(self, init, patterns=()):
+        """The state `init`, with an index for each (pred, positions) of `patterns` (the
+        joins' lookups), built in the same one pass; any other is built when first asked."""
         self.facts: dict = {}               # fact -> None: a set in insertion order
         self.hash = 0
-        self.fluent = fluent_preds          # predicates some effect changes
         self.indices: dict = {}             # (pred, positions) -> {key: {args: None}}
         self.by_pred: dict = {}             # pred -> [(positions, index), ...] (maintained indices)
         self.log: list = []                 # (fact, added) since the start, undone by `undo`
+        for pred, positions in sorted(patterns):
+            index = self.indices[(pred, positions)] = {}
+            self.by_pred.setdefault(pred, []).append((positions, index))
         for fact in init:
             self._add(fact)
         self.log.clear()

@@ -42,9 +42,8 @@ class Compiled:
         dom, prob = htn.domain, htn.problem
         self.objects = Objects(prob.objects, dom.parents)
         self.goal = prob.goal
-        fluent = {e.pred for a in dom.actions for e in a.effects}
-        self.fluent = fluent
-        self.init = sorted((p, tuple(args)) for p, args in prob.init)   # a fixed order: :init is a set
+        # :init in file order (a fixed order: the search's choices follow the facts')
+        self.init = prob.init_order if prob.init_order is not None else sorted(prob.init)
         join = lambda f, bound, free: Join(f, bound, free, self.objects, dom.predicates, dom.parents)  # noqa: E731
         self.actions = {}
         for a in dom.actions:
@@ -59,6 +58,10 @@ class Compiled:
             if entry[3] < math.inf:   # else it can never be reduced to actions
                 self.methods.setdefault(m.task[0], []).append(entry)
         self.root = self._method(htn.network, htn, dom)
+        joins = [j for _, j, _ in self.actions.values()] + [j for _, _, effects in self.actions.values()
+                                                            for _, j in effects if j is not None]
+        joins += [entry[2] for entries in self.methods.values() for entry in entries] + [self.root[2]]
+        self.patterns = {(step[1], step[2]) for j in joins for step in j.steps if step[0] == "match"}
 
     def _method(self, m, htn, dom) -> tuple:
         """(method, how its task's arguments bind its variables, its join, its estimate)."""
