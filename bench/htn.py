@@ -8,8 +8,12 @@ plan verified, beside the published results.
 
 DIR is a copy of the public repository panda-planner-dev/ipc2020-domains (its
 total-order/ folder is read); nothing of it is in this repository. A snapshot may lack
-its largest files: the problems listed in a domain's README or named like its others but
-absent are reported as missing, never counted as solved or failed.
+its largest files (4 MB and more): with --repo (its git directory) the problems the
+repository lists but the copy lacks are reported as missing, never counted as solved or
+failed. --rebuilt DIR runs such Minecraft-Regular problems rebuilt elsewhere with the
+repository's own generator (Minecraft-Player/generate-problem-hddl-player.py, less the
+player's facts: that reproduces each of the 44 present problems exactly, whitespace
+aside); their rows say `rebuilt`.
 
 Each run is a whole process (`python -m bcc import hddl D P --json --ipc-plan F`), timed
 in CPU seconds (RLIMIT_CPU is the budget; wall time on a shared machine is noisy). Each
@@ -133,6 +137,9 @@ def main() -> None:
     ap.add_argument("--time-limit", type=float, default=60, help="CPU seconds per problem [60]")
     ap.add_argument("--panda", help="pandaPIparser, built from its public source, to verify plans too")
     ap.add_argument("--only", help="a regular expression over domain names")
+    ap.add_argument("--rebuilt", help="a folder of Minecraft-Regular problems the copy lacks, rebuilt with the "
+                                      "repository's own generator (run beside the others, marked rebuilt)")
+    ap.add_argument("--player-limit", type=float, help="CPU seconds per Minecraft-Player problem [--time-limit]")
     ap.add_argument("-o", "--output", default=str(HERE / "htn.json"))
     args = ap.parse_args()
     base = Path(args.ipc) / "total-order"
@@ -143,15 +150,23 @@ def main() -> None:
     for name in names:
         folder = base / name
         todo = problems(folder) if name in FIRST else problems(folder)[:args.others]
+        absent = missing(folder, Path(args.repo) if args.repo else None) if name in FIRST else []
+        rebuilt = []
+        if name == "Minecraft-Regular" and args.rebuilt:
+            rebuilt = [p for p in sorted(Path(args.rebuilt).glob("p-*.hddl")) if p.name in absent]
+            todo += [(str(folder / "domain.hddl"), str(p)) for p in rebuilt]
+            absent = [a for a in absent if a not in {p.name for p in rebuilt}]
+        limit = args.player_limit if name == "Minecraft-Player" and args.player_limit else args.time_limit
         rows = []
         for domain, problem in todo:
-            row = run(domain, problem, args.time_limit, args.panda)
+            row = run(domain, problem, limit, args.panda)
+            row["rebuilt"] = Path(problem).parent != folder
             rows.append(row)
             print(f"{name:26} {row['problem']:34} {row['status']:11} cpu {row['cpu_seconds']:7.2f} s "
                   f"length {row.get('length') or '-':>5} verified {row.get('verified', '-')}"
                   f"{'' if 'panda' not in row else ' panda ' + str(row['panda'])}", flush=True)
-        absent = missing(folder, Path(args.repo) if args.repo else None) if name in FIRST else []
-        results[name] = {"rows": rows, "missing": absent, "summary": summary(name, rows, absent)}
+        results[name] = {"rows": rows, "missing": absent, "rebuilt": [p.name for p in rebuilt], "time_limit_cpu_s": limit,
+                         "summary": summary(name, rows, absent)}
     print()
     print(f"{'domain':26} {'run':>4} {'miss':>4} {'solved':>6} {'no plan':>7} {'verified':>8} {'panda':>5} "
           f"{'cpu med':>7} {'cpu max':>7} {'len max':>7}  published")

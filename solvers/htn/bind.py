@@ -92,7 +92,7 @@ class Join:
 
     def __init__(self, formula, bound, free: tuple, objects: Objects, predicates: dict, parents: dict):
         self.objects = objects
-        self.steps = _compile(_conjuncts(formula), set(bound), dict(free), objects, predicates, parents)
+        self.steps = _compile(conjuncts(formula), set(bound), dict(free), objects, predicates, parents)
 
     def bindings(self, facts, env: dict) -> list:
         """Every completion of `env` (copies) under which the formula holds, in a fixed order."""
@@ -160,17 +160,17 @@ class Join:
         return True
 
 
-def _conjuncts(f) -> list:
+def conjuncts(f) -> list:
     if f[0] == "and":
-        return [c for g in f[1] for c in _conjuncts(g)]
+        return [c for g in f[1] for c in conjuncts(g)]
     return [] if f[0] == "true" else [f]
 
 
-def _compile(conjuncts: list, bound: set, free: dict, objects: Objects, predicates: dict, parents: dict) -> list:
+def _compile(parts: list, bound: set, free: dict, objects: Objects, predicates: dict, parents: dict) -> list:
     """Join steps: each positive atom looked up by its bound arguments (the atom with the
     most bound first), every other conjunct tested once its variables are bound."""
-    atoms = [c for c in conjuncts if c[0] == "atom"]
-    rest = [c for c in conjuncts if c[0] != "atom"]
+    atoms = [c for c in parts if c[0] == "atom"]
+    rest = [c for c in parts if c[0] != "atom"]
     steps: list = []
 
     def fits(var: str, declared=None):

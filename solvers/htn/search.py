@@ -9,7 +9,11 @@ state: nothing is grounded ahead). The alternatives at a compound task are a cho
 point, tried in the order of estimate.py; failing ones are undone (facts.py's log) and
 the next is tried. A (state, network) pair met before -- on the current path (a loop)
 or in a subtree that already failed -- is not searched again: both are recognised by
-the state's and the network's incremental hashes.
+the state's and the network's incremental hashes. A compound task met again while it is
+being decomposed, with no action in between (so in the same state), is cut too: that ends
+left recursion (get-to = get-to somewhere else, then drive), whose networks grow without
+end and never repeat. HyperTensioN cuts the same; in principle it can cut a plan whose
+inner copy of the task needs the tasks queued after it, which no IPC domain here needs.
 
 The network is a linked list (hash, name, args, id, rest): pushing a method's subtasks
 shares the rest, and each node's hash covers the tasks below it.
@@ -20,7 +24,7 @@ import math
 from dataclasses import dataclass
 
 from ...pddl_io.lifted import TRUE, is_a
-from .bind import Join, Objects, holds, is_var
+from .bind import Join, Objects, conjuncts, holds, is_var
 from .estimate import method_cost, task_costs
 
 
@@ -78,8 +82,39 @@ class Compiled:
             unify.append((i, term, None if implied else self.objects.fits(want), True))
             bound.add(term)
         free = tuple((v, t) for v, t in m.params if v not in bound)
-        join = Join(m.pre, bound, free, self.objects, dom.predicates, dom.parents)
+        pre = m.pre
+        ahead = self._static_ahead(m, dom)
+        if ahead:
+            pre = ("and", (pre, *ahead))
+        join = Join(pre, bound, free, self.objects, dom.predicates, dom.parents)
         return m, tuple(unify), join, method_cost(m, self.task_costs, set(self.actions))
+
+    def _static_ahead(self, m, dom) -> list:
+        """The static part of the preconditions of the method's actions, in its terms.
+
+        A precondition literal over a predicate no action changes (or an equality) that
+        fails now fails when the action comes: checking it with the method's own
+        precondition cuts a binding at once instead of after every subtask before that
+        action, and binds a variable that only the action constrains (the direction a
+        calibration needs) through the facts instead of over every object of its type."""
+        changed = {e.pred for a in dom.actions for e in a.effects}
+        by_name = {a.name: a for a in dom.actions}
+        out = []
+        for name, terms in m.subtasks:
+            action = by_name.get(name)
+            if action is None:
+                continue
+            rename = dict(zip((v for v, _ in action.params), terms))
+            for lit in conjuncts(action.pre):
+                atom = lit[1] if lit[0] == "not" else lit
+                if atom[0] == "atom" and atom[1] not in changed:
+                    new = ("atom", atom[1], tuple(rename.get(t, t) for t in atom[2]))
+                elif atom[0] == "=":
+                    new = ("=", rename.get(atom[1], atom[1]), rename.get(atom[2], atom[2]))
+                else:
+                    continue
+                out.append(("not", new) if lit[0] == "not" else new)
+        return out
 
     def expansions(self, name: str, args: tuple, facts) -> list:
         """(estimate, method, ground subtasks) for every way to decompose (name, args) in
@@ -137,8 +172,12 @@ def run_search(c: Compiled, facts, meter, budget) -> Outcome:
     plan: list = []
     decomps: list = []
     visited: set = set()
-    choices: list = []      # [alternatives, next, undo mark, len(plan), len(decomps), network node]
+    choices: list = []      # [alternatives, next, undo mark, len(plan), len(decomps), network node, open]
     counter = [0]
+    # The compound tasks being decomposed since the last action on this path: one met again
+    # there (same arguments, same state) is cut, which ends left recursion (a method whose
+    # first subtask is its own task again, with other arguments each time).
+    open_tasks = [frozenset()]
     expanded = generated = 0
     max_states = budget.max_states
 
@@ -154,9 +193,10 @@ def run_search(c: Compiled, facts, meter, budget) -> Outcome:
 
     def take(choice):
         """The network after the choice's next alternative, its decomposition recorded."""
-        alts, i, _, _, _, node = choice
+        alts, i, _, _, _, node, before = choice
         choice[1] = i + 1
         _, m, subtasks = alts[i]
+        open_tasks[0] = before | {(node[1], node[2])}
         net, ids = push(subtasks, node[4])
         decomps.append((node[3], node[1], node[2], m.name, ids))
         return net
@@ -176,7 +216,7 @@ def run_search(c: Compiled, facts, meter, budget) -> Outcome:
     alts = c.expansions(None, (), facts)
     net = False
     if alts:
-        choices.append([alts, 0, facts.mark(), 0, 0, root])
+        choices.append([alts, 0, facts.mark(), 0, 0, root, frozenset()])
         net = take(choices[-1])
     while net is not False:
         if net is None:
@@ -188,12 +228,13 @@ def run_search(c: Compiled, facts, meter, budget) -> Outcome:
         if name in c.actions:
             if c.apply(name, args, facts):
                 plan.append((uid, name, args))
+                open_tasks[0] = frozenset()
                 net = rest
             else:
                 net = backtrack()
             continue
         key = (facts.hash, net[0])
-        if key in visited:
+        if key in visited or (name, args) in open_tasks[0]:
             net = backtrack()
             continue
         visited.add(key)
@@ -207,6 +248,6 @@ def run_search(c: Compiled, facts, meter, budget) -> Outcome:
         if not alts:
             net = backtrack()
             continue
-        choices.append([alts, 0, facts.mark(), len(plan), len(decomps), net])
+        choices.append([alts, 0, facts.mark(), len(plan), len(decomps), net, open_tasks[0]])
         net = take(choices[-1])
     return Outcome("no_solution", [], [], expanded, generated, len(visited))
