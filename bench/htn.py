@@ -18,8 +18,8 @@ aside); their rows say `rebuilt`.
 Each run is a whole process (`python -m bcc import hddl D P --json --ipc-plan F`), timed
 in CPU seconds (RLIMIT_CPU is the budget; wall time on a shared machine is noisy). Each
 plan is checked by bcc's verifier (hddl/verify.py, written apart from the planner) and,
-with --panda, by the competition's own verifier (pandaPIparser -v, built from its public
-source). Prints one table beside the published IPC figures and writes bench/htn.json.
+with --panda, by the competition's own verifier (pandaPIparser -v -l, built from its public
+source; -l ignores case, as bcc reads HDDL names). Prints one table beside the published IPC figures and writes bench/htn.json.
 """
 from __future__ import annotations
 
@@ -75,7 +75,7 @@ def missing(folder: Path, repo: Path | None) -> list[str]:
                   and not (folder / Path(p).name).exists())
 
 
-def run(domain: str, problem: str, limit: float, panda: str | None) -> dict:
+def run(domain: str, problem: str, limit: float, panda: str | None, panda_limit: float = 120) -> dict:
     with tempfile.TemporaryDirectory(prefix="bcc-bench-htn-") as tmp:
         ipc = os.path.join(tmp, "plan.ipc")
         cmd = [sys.executable, "-m", "bcc", "import", "hddl", domain, problem, "--json", "--ipc-plan", ipc,
@@ -94,7 +94,7 @@ def run(domain: str, problem: str, limit: float, panda: str | None) -> dict:
         if data["solved"]:
             row["verified"] = verify(domain, problem, Path(ipc).read_text())
             if panda:
-                row["panda"] = panda_verify(panda, domain, problem, ipc)
+                row["panda"] = panda_verify(panda, domain, problem, ipc, panda_limit)
         return row
 
 
@@ -105,10 +105,13 @@ def verify(domain: str, problem: str, text: str) -> bool | str:
     return True if why is None else why
 
 
-def panda_verify(panda: str, domain: str, problem: str, plan: str) -> bool | str:
+def panda_verify(panda: str, domain: str, problem: str, plan: str, limit: float) -> bool | str:
     import subprocess
     try:
-        out = subprocess.run([panda, "-v", domain, problem, plan], capture_output=True, text=True, timeout=1800)
+        # -l (lenient): bcc reads HDDL case-insensitively and writes names lowercased, while
+        # pandaPIparser is case-sensitive unless told otherwise (AssemblyHierarchical's CamelCase)
+        out = subprocess.run([panda, "-v", "-l", domain, problem, plan], capture_output=True, text=True,
+                             timeout=limit)
     except subprocess.TimeoutExpired:
         return "timeout"
     text = re.sub(r"\x1b\[[0-9;]*m", "", out.stdout + out.stderr)
@@ -124,6 +127,7 @@ def summary(name: str, rows: list, absent: list) -> dict:
             "verified": sum(r.get("verified") is True for r in solved),
             "panda_verified": sum(r.get("panda") is True for r in solved) if any("panda" in r for r in solved)
             else None,
+            "panda_refused": sum(r.get("panda") not in (True, "timeout", None) for r in solved),
             "cpu_median": round(statistics.median(cpu), 2) if cpu else None, "cpu_max": max(cpu) if cpu else None,
             "length_max": max((r["length"] for r in solved), default=None),
             "published": PUBLISHED.get(name, "")}
@@ -136,6 +140,8 @@ def main() -> None:
     ap.add_argument("--others", type=int, default=0, help="also the first N problems of every other domain")
     ap.add_argument("--time-limit", type=float, default=60, help="CPU seconds per problem [60]")
     ap.add_argument("--panda", help="pandaPIparser, built from its public source, to verify plans too")
+    ap.add_argument("--panda-limit", type=float, default=120,
+                    help="wall seconds for pandaPIparser on one plan [120]; it grounds the problem, slow on big houses")
     ap.add_argument("--only", help="a regular expression over domain names")
     ap.add_argument("--rebuilt", help="a folder of Minecraft-Regular problems the copy lacks, rebuilt with the "
                                       "repository's own generator (run beside the others, marked rebuilt)")
@@ -159,7 +165,7 @@ def main() -> None:
         limit = args.player_limit if name == "Minecraft-Player" and args.player_limit else args.time_limit
         rows = []
         for domain, problem in todo:
-            row = run(domain, problem, limit, args.panda)
+            row = run(domain, problem, limit, args.panda, args.panda_limit)
             row["rebuilt"] = Path(problem).parent != folder
             rows.append(row)
             print(f"{name:26} {row['problem']:34} {row['status']:11} cpu {row['cpu_seconds']:7.2f} s "
