@@ -163,7 +163,7 @@ class _World:
                     (adds if e.add else dels).add((e.pred, tuple(self.value(t, b) for t in e.args)))
         self.facts = (self.facts - dels) | adds
         for p, a in dels - adds:
-            self.by_pred[p].discard(a)
+            self.by_pred.get(p, set()).discard(a)   # deleting an atom that is false: no change
         for p, a in adds:
             self.by_pred.setdefault(p, set()).add(a)
         return None
