@@ -48,8 +48,11 @@ def error(status: int, body: dict) -> JSONResponse:
 
 
 def create_app(settings: Settings = Settings()) -> FastAPI:
+    """The service: its error answers, the page, the dungeon listing, compiling and
+    stepping (shipped dungeons here, posted text in the model host), and solve jobs."""
     jobs = JobManager(settings.workers, settings.keep_seconds)
     compiled = CompiledCache(settings.job_memory_mb, settings.compile_seconds, checks=max(2, settings.workers))
+    host = ModelHost(settings.job_memory_mb, settings.compile_seconds)
 
     @contextlib.asynccontextmanager
     async def lifespan(app):
@@ -65,7 +68,15 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
                   description="Compile and solve bcc dungeons over HTTP; a viewer at `/`.")
     app.state.jobs, app.state.settings = jobs, settings
     app.add_middleware(BodyLimit, max_bytes=settings.max_body_bytes)
+    _answer_errors(app)
+    _page_and_dungeons(app)
+    _compile_and_step(app, compiled, host)
+    _jobs(app, jobs, compiled, settings)
+    return app
 
+
+def _answer_errors(app: FastAPI) -> None:
+    """Bad input of every kind answers with one body: {error, line, column, file}."""
     @app.exception_handler(RequestValidationError)
     def invalid_request(request: Request, exc: RequestValidationError):
         """422 with the first problem in one line; the offending input is never echoed
@@ -89,33 +100,15 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
     def domain_error(request: Request, exc: ModelError):
         return error(400, {"error": f"domain error: {exc}", "line": None, "column": None, "file": None})
 
-    host = ModelHost(settings.job_memory_mb, settings.compile_seconds)
 
-    def stepped(req: DungeonRequest, task: str, extra: dict):
-        """Run a stepping task: a shipped dungeon here, posted text only in the model host."""
-        ref = parse_ref(req.dungeon)
-        if trusted(ref, req.goal):
-            model, rooms = compiled.model(ref, req.goal)
-            if task == "replay":
-                return replay_body(model, rooms, extra["actions"], extra["include_scene"])
-            return demonstration_body(model, False, extra["actions"], extra["command"])
-        compiled.report(ref, req.goal)  # checked (and rejected) once, in a throwaway process
-        outcome = host.call(task, {"ref": {"name": ref.name, "text": ref.text}, "goal": req.goal, **extra})
-        if outcome.kind == "ok":
-            return outcome.payload
-        if outcome.kind == "bad_input":
-            return error(400, outcome.payload)
-        return error(422, {"error": f"stepping the dungeon failed: {outcome.payload}",
-                           "line": None, "column": None, "file": None})
-
-    # ---- the page ---------------------------------------------------------------
+def _page_and_dungeons(app: FastAPI) -> None:
+    """The web page, the shipped dungeons and the solvers."""
     @app.get("/", include_in_schema=False)
     def index():
         return FileResponse(STATIC / "index.html")
 
     app.mount("/static", StaticFiles(directory=STATIC), name="static")
 
-    # ---- dungeons ---------------------------------------------------------------
     @app.get("/dungeons", response_model=DungeonList, summary="The shipped dungeons and domains")
     def list_dungeons():
         from .listing import listing
@@ -135,7 +128,26 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
         from ..solvers import describe_solvers
         return {"solvers": describe_solvers()}
 
-    # ---- compile, draw, step ----------------------------------------------------
+
+def _compile_and_step(app: FastAPI, compiled: CompiledCache, host: ModelHost) -> None:
+    """Compile, replay and record: a shipped dungeon in this process, posted text only in
+    a throwaway process (checking) and the model host (stepping)."""
+    def stepped(req: DungeonRequest, task: str, extra: dict):
+        ref = parse_ref(req.dungeon)
+        if trusted(ref, req.goal):
+            model, rooms = compiled.model(ref, req.goal)
+            if task == "replay":
+                return replay_body(model, rooms, extra["actions"], extra["include_scene"])
+            return demonstration_body(model, False, extra["actions"], extra["command"])
+        compiled.report(ref, req.goal)  # checked (and rejected) once, in a throwaway process
+        outcome = host.call(task, {"ref": {"name": ref.name, "text": ref.text}, "goal": req.goal, **extra})
+        if outcome.kind == "ok":
+            return outcome.payload
+        if outcome.kind == "bad_input":
+            return error(400, outcome.payload)
+        return error(422, {"error": f"stepping the dungeon failed: {outcome.payload}",
+                           "line": None, "column": None, "file": None})
+
     @app.post("/compile", responses={**ERRORS, 422: {"model": ErrorBody}},
               summary="Check and compile a dungeon: the report of `bcc compile --json`")
     def compile_(req: DungeonRequest):
@@ -151,7 +163,9 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
     def demonstration(req: DemonstrationRequest):
         return stepped(req, "demonstration", {"actions": list(req.actions), "command": req.command})
 
-    # ---- jobs -------------------------------------------------------------------
+
+def _jobs(app: FastAPI, jobs: JobManager, compiled: CompiledCache, settings: Settings) -> None:
+    """Solves, each a job in a process of its own: queue, poll, cancel; and /health."""
     @app.post("/solve", status_code=202, response_model=JobCreated, responses={**ERRORS, 503: {"model": ErrorBody}},
               summary="Queue a solve; poll GET /jobs/{id}")
     def solve(req: SolveRequest):
@@ -195,4 +209,3 @@ def create_app(settings: Settings = Settings()) -> FastAPI:
     def health():
         return {"ok": True, "version": __version__, "workers": settings.workers, "jobs": jobs.counts()}
 
-    return app
