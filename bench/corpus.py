@@ -72,13 +72,12 @@ def _mode(rows, levels, mode, folds, seeds, pooled_only) -> dict:
     return entry
 
 
-def _nested(rows, folds, seeds, workers) -> dict:
+def _nested(rows, folds, seeds, workers, save=None) -> dict:
     """Nested cross-validation (--from tasks, pooled levels) on each shuffle, its folds on
     `workers` processes: each shuffle's figures and choices, and the summary over them."""
     from collections import Counter
 
     from bcc.grounding import pairs
-    from bcc.grounding.shuffles import summarise
     wall, cpu = time.perf_counter(), _cpu()
     reports, by_seed = [], {}
     for seed in seeds:
@@ -89,7 +88,15 @@ def _nested(rows, folds, seeds, workers) -> dict:
                               "overall": 100 * r["accuracy"], "train_seconds": r["train_seconds"],
                               "chosen": dict(Counter(c["config"] for c in r["chosen"])),
                               "inner_accuracy": [c["inner_accuracy"] for c in r["chosen"]]}
-        print(f"[nested] seed {seed}: {100 * r['accuracy']:.1f} % in {time.perf_counter() - t0:.0f} s", file=sys.stderr)
+        print(f"[nested] seed {seed}: {100 * r['accuracy']:.1f} % in {time.perf_counter() - t0:.0f} s "
+              f"({', '.join(f'{lv} {v:.1f}' for lv, v in by_seed[str(seed)]['pooled'].items())})", file=sys.stderr)
+        if save:       # each shuffle as it ends: a run cut short still leaves its finished shuffles
+            save(_nested_result(reports, by_seed, wall, cpu))
+    return _nested_result(reports, by_seed, wall, cpu)
+
+
+def _nested_result(reports, by_seed, wall, cpu) -> dict:
+    from bcc.grounding.shuffles import summarise
     summary = {lv: {"mean": 100 * v["mean"], "low": 100 * v["low"], "high": 100 * v["high"],
                     "ci95": [100 * x for x in v["ci95"]], "total": v["total"]} for lv, v in summarise(reports).items()}
     return {"by_seed": by_seed, "summary": summary, "seconds": round(time.perf_counter() - wall, 1),
@@ -196,8 +203,20 @@ def _limits(rows) -> tuple[float, float]:
 
 
 def _report_nested(args, rows, levels, folds, seeds) -> int:
+    from bcc.atomic import write_text
     from bcc.grounding import nested
-    result = _nested(rows, folds, seeds, args.workers)
+    output = args.output or str(HERE / "corpus_nested.json")
+
+    def save(result, limits=None):
+        out = {"pairs": args.pairs, "count": len(rows), "model": MODEL, "folds": folds, "inner_folds": nested.INNER,
+               "configs": {name: list(w) for name, w in nested.CONFIGS}, "pool": [name for name, _, _ in nested.POOL],
+               "seeds": seeds, "finished_seeds": len(result["by_seed"]), "target": TARGET,
+               "target_mean": NESTED_MEAN_TARGET, "nested": result,
+               "python": sys.version.split()[0], "machine": platform.machine()}
+        if limits:
+            out |= {"train_all_cpu_seconds": round(limits[0], 2), "command_cpu_ms": round(limits[1], 3)}
+        write_text(output, json.dumps(out, indent=2) + "\n")
+    result = _nested(rows, folds, seeds, args.workers, save)
     train_cpu, command_ms = _limits(rows)
     print(f"{len(rows)} pairs, nested {folds}-fold cross-validation (inner {nested.INNER}-fold, "
           f"{len(nested.CONFIGS)} configurations), --from tasks, accuracy %; {result['cpu_seconds']:.0f} s CPU, "
@@ -214,13 +233,7 @@ def _report_nested(args, rows, levels, folds, seeds) -> int:
     print(f"{'95% interval (Wilson)':<26}" + "".join(f"{summary[lv]['ci95'][0]:5.1f}-{summary[lv]['ci95'][1]:<4.1f}"
                                                   for lv in levels + ["all"]))
     print(f"training on all {len(rows)} pairs: {train_cpu:.1f} s CPU; one command: {command_ms:.2f} ms CPU")
-    out = {"pairs": args.pairs, "count": len(rows), "model": MODEL, "folds": folds, "inner_folds": nested.INNER,
-           "configs": {name: list(w) for name, w in nested.CONFIGS}, "pool": [name for name, _, _ in nested.POOL],
-           "seeds": seeds, "target": TARGET, "target_mean": NESTED_MEAN_TARGET, "nested": result,
-           "train_all_cpu_seconds": round(train_cpu, 2), "command_cpu_ms": round(command_ms, 3),
-           "python": sys.version.split()[0], "machine": platform.machine()}
-    from bcc.atomic import write_text
-    write_text(args.output or str(HERE / "corpus_nested.json"), json.dumps(out, indent=2) + "\n")
+    save(result, (train_cpu, command_ms))
     return 0
 
 

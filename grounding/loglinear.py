@@ -21,7 +21,7 @@ model, it is a vote of its own in the ensemble (ensemble.py), and it cannot scor
 that was never a candidate in training (`knows`).
 
 Training maximises the conditional log-likelihood with an L2 penalty to convergence
-(L-BFGS, lbfgs.py), numpy only. A pair whose task is latent (inferred from a
+(scipy's L-BFGS-B). A pair whose task is latent (inferred from a
 demonstration: several weighted explanations) contributes log sum_{t in explanations}
 weight(t) P(t | command) -- EM's objective, differentiated directly.
 """
@@ -32,9 +32,9 @@ import re
 from collections import Counter
 
 import numpy as np
+from scipy.optimize import minimize
 
 from ..errors import BccError
-from .lbfgs import minimise
 from .model_file import JsonModelFile, expect_format
 from .text import Speller, words
 
@@ -233,8 +233,10 @@ class LogLinear(FeatureModel):
                 G[members] = (e / z - q / zq) @ T
             grad = by_col.sum(G) / n + l2 * W
             return loss / n + 0.5 * l2 * float((W * W).sum()), grad.ravel()
-        x, used = minimise(value_and_gradient, np.zeros(dc * dt), iterations=iterations)
-        return cls(command_index, task_index, x.reshape(dc, dt), speller, pairs=n, iterations=used, skips=skips,
+        fit = minimize(value_and_gradient, np.zeros(dc * dt), jac=True, method="L-BFGS-B",
+                       options={"maxiter": iterations, "maxcor": 10, "gtol": 1e-6, "ftol": 1e-10})
+        return cls(command_index, task_index, fit.x.reshape(dc, dt), speller, pairs=n, iterations=int(fit.nit),
+                   skips=skips,
                    factored=factored)
 
     # ---- files -------------------------------------------------------------------------

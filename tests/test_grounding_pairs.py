@@ -156,23 +156,6 @@ def test_model_file_round_trip(tmp_path):
     assert b[1] > b[0] and abs(a[1] - b[1]) < 1e-3
 
 
-def test_lbfgs_finds_known_minima():
-    import numpy as np
-    from bcc.grounding.lbfgs import minimise
-    # a convex quadratic 1/2 x'Ax - b'x: the minimum solves Ax = b
-    A = np.array([[4.0, 1.0, 0.0], [1.0, 3.0, 0.5], [0.0, 0.5, 2.0]])
-    b = np.array([1.0, -2.0, 0.5])
-    x, used = minimise(lambda x: (0.5 * x @ A @ x - b @ x, A @ x - b), np.zeros(3))
-    assert 0 < used < 50
-    assert np.allclose(x, np.linalg.solve(A, b), atol=1e-5)
-    # Rosenbrock's valley (not convex): the minimum is (1, 1)
-
-    def rosen(v):
-        x, y = v
-        return (1 - x) ** 2 + 100 * (y - x * x) ** 2, np.array([-2 * (1 - x) - 400 * x * (y - x * x), 200 * (y - x * x)])
-    assert np.allclose(minimise(rosen, np.array([-1.2, 1.0]), iterations=500)[0], [1.0, 1.0], atol=1e-4)
-
-
 def test_ensemble_votes_and_round_trips(tmp_path):
     from bcc.grounding import models
     from bcc.grounding.ensemble import Ensemble
