@@ -73,8 +73,19 @@ class _World:
         self.objects = htn.problem.objects
         self.facts = {(p, tuple(a)) for p, a in htn.problem.init}
         self.by_pred: dict = {}
+        self.by_arg: dict = {}           # (pred, position, object) -> the args of such facts
         for p, a in self.facts:
-            self.by_pred.setdefault(p, set()).add(a)
+            self._index(p, a)
+
+    def _index(self, p: str, a: tuple) -> None:
+        self.by_pred.setdefault(p, set()).add(a)
+        for i, o in enumerate(a):
+            self.by_arg.setdefault((p, i, o), set()).add(a)
+
+    def _unindex(self, p: str, a: tuple) -> None:
+        self.by_pred.get(p, set()).discard(a)   # deleting an atom that is false: no change
+        for i, o in enumerate(a):
+            self.by_arg.get((p, i, o), set()).discard(a)
 
     def of_type(self, obj: str, types) -> bool:
         t = self.objects.get(obj)
@@ -127,7 +138,12 @@ class _World:
         atoms = [a for a in _conjuncts(f) if a[0] == "atom" and names & set(a[2])]
         if atoms:
             atom = max(atoms, key=lambda a: sum(1 for t in a[2] if t not in names))
-            for args in sorted(self.by_pred.get(atom[1], ())):
+            known = [(i, self.value(t, env)) for i, t in enumerate(atom[2]) if t not in names]
+            candidates = min((self.by_arg.get((atom[1], i, v), set()) for i, v in known), key=len) if known \
+                else self.by_pred.get(atom[1], set())
+            for args in list(candidates):
+                if len(args) != len(atom[2]):
+                    continue
                 new = dict(env)
                 for term, value in zip(atom[2], args):
                     if term in names and term not in new:
@@ -163,9 +179,9 @@ class _World:
                     (adds if e.add else dels).add((e.pred, tuple(self.value(t, b) for t in e.args)))
         self.facts = (self.facts - dels) | adds
         for p, a in dels - adds:
-            self.by_pred.get(p, set()).discard(a)   # deleting an atom that is false: no change
+            self._unindex(p, a)
         for p, a in adds:
-            self.by_pred.setdefault(p, set()).add(a)
+            self._index(p, a)
         return None
 
     def _effect_bindings(self, e, env: dict):
