@@ -177,7 +177,8 @@ class _World:
             for b in self._effect_bindings(e, env):
                 if self.true(e.cond, b):
                     (adds if e.add else dels).add((e.pred, tuple(self.value(t, b) for t in e.args)))
-        self.facts = (self.facts - dels) | adds
+        self.facts -= dels - adds    # in place: a copy per action is quadratic on long plans
+        self.facts |= adds
         for p, a in dels - adds:
             self._unindex(p, a)
         for p, a in adds:
