@@ -91,7 +91,8 @@ class Grounder:
     def objects_of(self, types: frozenset) -> list:
         got = self._typed.get(types)
         if got is None:
-            got = [o for o, t in self.object_types.items() if any(is_a(t, w, self.dom.parents) for w in types)]
+            fits = {t: any(is_a(t, w, self.dom.parents) for w in types) for t in set(self.object_types.values())}
+            got = [o for o, t in self.object_types.items() if fits[t]]
             self._typed[types] = got
         return got
 

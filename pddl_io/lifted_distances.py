@@ -80,12 +80,28 @@ class Distances:
             return got
         task = self.task
         edges: dict = {}
+        done = set()
         for a, e in self._adders(pred, obj):
             types = dict(a.params)
             d = next(d for d in a.effects if not d.add and d.pred == pred and d.args[0] == e.args[0])
             old, new = d.args[1], e.args[1]
             statics = [c for c in conjuncts(a.pre)
                        if c[0] == "atom" and c[1] not in task.fluent and free_vars(c) and free_vars(c) <= {old, new}]
+            key = (old, new, types.get(old), types.get(new), tuple(statics))
+            if key in done:           # many schemas move alike (every "move and pick up" kind)
+                continue
+            done.add(key)
+            both = old.startswith("?") and new.startswith("?") and old != new
+            link = next((c for c in statics if both and len(c[2]) == 2 and set(c[2]) == {old, new}), None)
+            if link is not None:
+                # a static pair such as (succ ?v ?w): its facts are the candidate edges
+                fit_old, fit_new = task._fit_set(types[old]), task._fit_set(types[new])
+                for fact in task.static_all.get(link[1], ()):
+                    env = dict(zip(link[2], fact))
+                    if env[old] in fit_old and env[new] in fit_new and \
+                            all((c[1], tuple(env.get(x, x) for x in c[2])) in task.static for c in statics):
+                        edges.setdefault(env[old], set()).add(env[new])
+                continue
             olds = task.domain(types[old]) if old.startswith("?") else [old]
             news = task.domain(types[new]) if new.startswith("?") else [new]
             for vo in olds:
