@@ -127,7 +127,8 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal, time_limit, max_mem
 
 @main.command("solve")
 @click.argument("dungeon")
-@click.option("--solver", default="astar", show_default=True, help="Solver name (see `bcc solvers`).")
+@click.option("--solver", default=None, help="Solver name (see `bcc solvers`) [default: build for a structure "
+              "goal, else astar].")
 @json_option
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
 @time_limit_option()
@@ -151,7 +152,9 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
         return model
 
     progress = progress_enabled()
-    ran = run(Request(load, solver, given, Budget(max_states, time_limit, max_memory), progress, spell=spell))
+    pick = solver is None and all(v is None for v in given.values())   # bcc solve's default: by the goal
+    ran = run(Request(load, solver or "astar", given, Budget(max_states, time_limit, max_memory), progress, spell=spell,
+                      pick=pick))
     clear_progress(progress)
     result, model = ran.result, ran.model
     if output and result.solved:
@@ -308,6 +311,36 @@ def generate_rooms_cmd(stones, name, output, as_json):
         emit_json({"output": output, "stones": stones, "yaml": None if output else text})
     elif not output:
         click.echo(text, nl=False)
+
+
+def _structure_command(kind: str, summary: str):
+    @generate_group.command(kind, help=summary)
+    @click.option("--width", type=int, default=5, show_default=True, help="Cells along x.")
+    @click.option("--length", type=int, default=5, show_default=True, help="Cells along z.")
+    @click.option("--height", type=int, default=5, show_default=True, help="Cells along y (a house's walls; the roof is on top).")
+    @click.option("--material", default="planks", show_default=True, help="The block the structure is made of (a mason material).")
+    @click.option("--name", default=None, help="Dungeon name [default: KIND_WxLxH].")
+    @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write to FILE (atomically) instead of stdout.")
+    @json_option
+    def command(width, length, height, material, name, output, as_json):
+        from ..generate_structures import generate_structure
+        text = generate_structure(kind, width, length, height, material=material, name=name)
+        if output:
+            write_output(output, text)
+        if as_json:
+            emit_json({"output": output, "kind": kind, "width": width, "length": length, "height": height,
+                       "material": material, "yaml": None if output else text})
+        elif not output:
+            click.echo(text, nl=False)
+    return command
+
+
+for _kind, _summary in (
+        ("house", "A house (four walls, a door opening, a roof) to build on a flat world (the mason domain)."),
+        ("wall", "A wall to build on a flat world (the mason domain)."),
+        ("tower", "A hollow tower to build on a flat world (the mason domain)."),
+        ("bridge", "A deck on four corner posts, air under it, to build on a flat world (the mason domain).")):
+    _structure_command(_kind, _summary)
 
 
 @main.command("learn-curve")

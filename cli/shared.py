@@ -52,7 +52,8 @@ def within_budget(time_limit: float | None, max_memory: float | None, as_json: b
         sys.exit(EXIT_NO_SOLUTION)
 
 
-goal_option = click.option("--goal", metavar="EXPR", help="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)'.")
+goal_option = click.option("--goal", metavar="EXPR", help="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)', or a "
+                           "blueprint file (FILE.yaml holding `structure:`).")
 json_option = click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
 
 
@@ -116,7 +117,7 @@ def print_result(result, name: str, where: str, as_json: bool, extra: dict | Non
 # values are text, checked by the chosen solver's declaration (solvers/options.py).
 # tests/test_solver_contract.py holds this list to the built-in solvers' declarations.
 SOLVER_FLAGS = ("heuristic", "weight", "preferred", "evaluation", "model", "episodes", "seed", "gamma", "alpha", "epsilon",
-                "delta", "known_after", "max_steps", "fd_search")
+                "delta", "known_after", "max_steps", "fd_search", "local_limit")
 
 
 def flag(name: str) -> str:

@@ -15,6 +15,7 @@ from .domain import Domain, Expr, _condition, is_file, load_domain, resolve_doma
 from .blocks import parse_blocks, place_blocks
 from .limits import MAX_GRID_CELLS, MAX_REF_LENGTH, shorten
 from .names import check_name, check_text, name_from_stem
+from .structure import is_structure, read_blueprint, structure_expr
 from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest
 
 DUNGEONS_DIR = Path(__file__).resolve().parent.parent / "dungeons"
@@ -43,6 +44,7 @@ class Dungeon:
     where: dict = field(default_factory=dict)
     legend_columns: dict = field(default_factory=dict)  # map character -> column of value indices
     start_char: str | None = None
+    structure: object = None                       # the goal's blueprint (structure.py), when it is one
     warnings: list = field(default_factory=list)   # BccErrors that do not stop loading (`file:line:col: warning: ...`)
 
     @property
@@ -182,7 +184,10 @@ class _Builder:
         self.agent(dungeon, rows, legend, map_origin)
         self.inventory(dungeon)
         self.rooms(dungeon)
-        if "goal" in data:
+        if "goal" in data and is_structure(data["goal"]):
+            dungeon.structure = read_blueprint(data["goal"], tuple(self.venum.values), (width, height, depth))
+            dungeon.goal = structure_expr(dungeon.structure, data["goal"], gclass.name, value_attrs[0])
+        elif "goal" in data:
             dungeon.goal = _condition(data, "goal")
         return dungeon
 

@@ -13,6 +13,7 @@ state's sorted diff. `compact=False` emits the same functions over the dense lay
 """
 from __future__ import annotations
 
+from bisect import bisect_left
 import functools
 import itertools
 import math
@@ -224,17 +225,29 @@ class Emitter:
 
         def merge(n, w):
             """`n` (a copy of the old state, variables written) with the cell writes `w` merged
-            into its sorted diff; cells back at their start value leave the diff."""
-            if len(n) > NV:
-                d = {e >> 8: e & 255 for e in cell_entries(n[NV:])}
-                d.update(w)
-                del n[NV:]
-            else:
-                d = w
-            for k in sorted(d):
-                v = d[k]
+            into its sorted diff; cells back at their start value leave the diff. Each write
+            is spliced in where a binary search finds it, so a state with thousands of
+            changed cells costs a copy, not a re-encoding of every entry."""
+            if len(n) <= NV:
+                for k in sorted(w):
+                    v = w[k]
+                    if v != S0[k]:
+                        n += pack_entry(k, v)
+                return bytes(n)
+            diff = bytes(n[NV:])
+            del n[NV:]
+            entries = cell_entries(diff)
+            size, pos = len(entries), 0
+            for k in sorted(w):
+                i = bisect_left(entries, k << 8, pos)
+                n += diff[4 * pos:4 * i]
+                if i < size and entries[i] >> 8 == k:
+                    i += 1                 # the old entry of this cell is replaced
+                v = w[k]
                 if v != S0[k]:
                     n += pack_entry(k, v)
+                pos = i
+            n += diff[4 * pos:]
             return bytes(n)
 
         self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,

@@ -19,6 +19,7 @@ from ..model import Grid, Model, Variable
 from . import ir
 from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
+from .domain import is_file
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
 from .emit import Emitter, GroundAction
 from .ground import Ctx, Grounder, check_nesting
@@ -132,6 +133,7 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
                         "worst": len(initial) + 4 * layout.mutable_cells, "dense": layout.size},
         "goal": goal_src.text,
         "goal_positions": None if goal_positions is None else len(goal_positions),
+        "structure": dungeon.structure.summary() if dungeon.structure is not None else None,
         "warnings": [str(w) for w in dungeon.warnings],
     }
     return Model(
@@ -178,13 +180,30 @@ def _load(ref) -> Dungeon:
 
 
 def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
+    if goal is not None and goal.endswith((".yaml", ".yml")) and is_file(Path(goal)):
+        return _structure_file(dungeon, goal)
     if goal is not None:
+        dungeon.structure = None
         from .parse import parse_expression   # lark: imported only when text is parsed
         where = Origin("--goal", 1, 1)
         return Expr(parse_expression(goal, where), where, goal)
     if dungeon.goal is None:
         raise BccError("the dungeon has no `goal`; add one or pass --goal EXPRESSION", dungeon.path)
     return dungeon.goal
+
+
+def _structure_file(dungeon: Dungeon, path: str) -> Expr:
+    """`--goal FILE.yaml`: a file holding a blueprint (`structure:`, compiler/structure.py)."""
+    from .source import error_on, load_yaml
+    from .structure import is_structure, read_blueprint, structure_expr
+    data = load_yaml(path)
+    if not is_structure(data):
+        raise error_on(data, "a goal file holds a blueprint: a mapping with `structure:`")
+    cdef = dungeon.domain.classes[dungeon.grid_class]
+    attr = _grid_value_attr(dungeon)
+    values = tuple(dungeon.domain.enums[cdef.attrs[attr].type].values)
+    dungeon.structure = read_blueprint(data, values, (dungeon.width, dungeon.height, dungeon.depth))
+    return structure_expr(dungeon.structure, data, dungeon.grid_class, attr)
 
 
 def _check_keyed_objects(g: Grounder, d: Dungeon) -> None:

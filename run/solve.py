@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from ..model import Model
-from ..solvers import Budget, Result, check_options, get_solver, optimal_cost
+from ..solvers import Budget, Result, check_options, default_solver, get_solver, optimal_cost
 from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
 from ..solvers.options import keywords_of
 
@@ -36,6 +36,7 @@ class Request:
     spell: Callable[[str], str] | None = None
     solve: Callable | None = None        # called instead of the solver's own function (the PDDL portfolio)
     search_share: float = 1.0            # of the time left once the model is loaded, for the search
+    pick: bool = False                   # choose the solver by the loaded model (solvers.default_solver)
 
 
 @dataclass
@@ -58,6 +59,9 @@ def run(request: Request) -> Ran:
     try:
         with hard_limits(budget) if request.hard else contextlib.nullcontext():
             model = request.load()
+            if request.pick and default_solver(model) != solver:
+                solver = default_solver(model)
+                solve = get_solver(solver)
             if "optimal_cost" in keywords_of(get_solver(solver)):
                 options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
             result = solve(model, deadline.remaining(request.search_share), progress=request.progress, **options)

@@ -56,6 +56,7 @@ class SolveRequest(DungeonRequest):
     delta: float | None = Field(None, description="rmax: value iteration stops below this change [default: 0.01].")
     known_after: int | None = Field(None, description="rmax: visits before a (state, action) is known [default: 1].")
     max_steps: int | None = Field(None, description="Learning solvers: steps before an episode is cut.")
+    local_limit: int | None = Field(None, description="build: expansions of one goal atom's search [default: 4000].")
 
 
 MAX_ACTIONS = 20_000  # a frame is ~1 KB of JSON: bounds one answer to tens of MB

@@ -20,13 +20,14 @@ BUILTIN = {
     "astar": ("bcc.solvers.astar:solve", "A* (optimal with weight 1; weight W > 1: cost <= W x optimal)"),
     "wastar": ("bcc.solvers.astar:solve_weighted", "weighted A*, f = g + W h (cost <= W x optimal)"),
     "gbfs": ("bcc.solvers.gbfs:solve", "greedy best-first search (fast, not optimal)"),
+    "build": ("bcc.solvers.build:solve", "builds a goal of many cell atoms one at a time (satisficing; reports a lower bound)"),
     "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
     "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning: learns the dynamics from episodes"),
     "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline"),
     "htn": ("bcc.solvers.htn:solve", "total-order HTN progression over task networks (bcc import hddl)"),
 }
 
-__all__ = ["Budget", "Result", "check_options", "describe_solvers", "get_solver", "list_solvers", "optimal_cost"]
+__all__ = ["Budget", "Result", "check_options", "default_solver", "describe_solvers", "get_solver", "list_solvers", "optimal_cost"]
 
 
 def optimal_cost(model, budget: Budget | None = None) -> int | None:
@@ -38,6 +39,20 @@ def optimal_cost(model, budget: Budget | None = None) -> int | None:
         budget = Budget(time_limit=60, max_memory_mb=Budget.default().max_memory_mb)
     reference = get_solver("astar")(model, budget)
     return reference.cost if reference.solved else None
+
+
+STRUCTURE_ATOMS = 10   # cell atoms from which a goal counts as a structure
+
+
+def default_solver(model) -> str:
+    """`bcc solve`'s choice when no --solver is given: `build` for a structure goal (a
+    blueprint, or a conjunction of at least STRUCTURE_ATOMS cell atoms), else `astar`.
+    The one place this rule lives (docs/structures.md states it)."""
+    from ..heuristics.goal_cells import goal_cells
+    if model.report.get("structure"):
+        return "build"
+    cells = goal_cells(model)
+    return "build" if cells is not None and len(cells.atoms) >= STRUCTURE_ATOMS else "astar"
 
 
 def _plugins() -> dict:

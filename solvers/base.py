@@ -47,6 +47,7 @@ class Result:
     initial_h: float | None = None
     episodes: list = field(default_factory=list)   # learning solvers: [{"steps", "return", "success"}, ...]
     converged_episode: int | None = None           # learning solvers: first episode after which all are optimal
+    lower_bound: int | None = None                 # build: an admissible lower bound on the cost from the start
 
     def to_json(self) -> dict:
         return asdict(self)

@@ -1,0 +1,294 @@
+"""The builder: satisficing search for goals of many cell atoms, one atom at a time.
+
+A goal that is a conjunction of cell atoms (heuristics/goal_cells.py) is reached by
+*serialising* it: the next atom is the nearest one that is *ready* (an achiever's needs
+on the other cells hold, e.g. what it rests on is there) and that no pending atom waits
+for (the orders the actions imply); a small greedy search reaches it from the current
+state with h = the walk to its nearest standing place, never changing an atom already
+achieved (each achieved atom is *protected*). An atom whose search fails is set aside
+until another one is achieved. When nothing is ready or every ready atom fails, or when
+the goal's other conjuncts remain, gbfs finishes from the state reached (the fallback),
+with what is left of the budget. Nothing here knows what is being built.
+
+The result carries `lower_bound` (goal_cells.lower_bound at the start: admissible).
+"""
+from __future__ import annotations
+
+import dataclasses
+import heapq
+import itertools
+
+from ..heuristics.goal_cells import CellReader, goal_cells, lower_bound, orders, ready, support_levels
+from ..errors import ModelError
+from .base import Budget, Meter, Result, budget_result
+from .options import Option, declare
+
+NAME = "build"
+LIFTS = 2          # actions that write and move tried at the end of a walk (a climb, twice)
+RETRY = 8          # atoms achieved before a set-aside atom is tried again
+
+
+def _distance(a, b) -> int:
+    return abs(a[0] - b[0]) + abs(a[1] - b[1]) + abs(a[2] - b[2])
+
+
+class _Builder:
+    def __init__(self, model, cells, meter, budget, local_limit):
+        self.model, self.cells, self.meter, self.budget = model, cells, meter, budget
+        self.read = CellReader(model)
+        self.succ = model.search_successors()
+        self.local_limit = local_limit
+        self.expanded = self.generated = 0
+        self.protected = {}            # position -> value
+        self.writes = {}               # action -> offsets it writes (None: not known)
+        for lst in cells.achievers.values():
+            for a in lst:
+                self.writes.setdefault(a.action, set()).add(a.write)
+        c = model.data("compiled")
+        from ..heuristics.goal_cells import _count_writes, _moves
+        axes = {v: i for i, v in enumerate(c.position_vars)}
+        for i in c.search:
+            if _count_writes(c.actions[i].effects) and i not in self.writes:
+                self.writes[i] = None
+        for i, s in self.writes.items():
+            if s is not None and len(s) < _count_writes(c.actions[i].effects):
+                self.writes[i] = None
+        # actions that write no cell: the walks of `walk`; actions that write a cell and move
+        # the agent (a way up or down): tried a few in a row at the end of a walk
+        self.movers = [i for i in c.search if not _count_writes(c.actions[i].effects)]
+        self.lifts = sorted({a.action for lst in cells.achievers.values() for a in lst if a.moves} |
+                            {i for i in c.search if i in self.writes and _moves(c.actions[i].effects, axes)})
+        self.walkers = self.movers + self.lifts
+        self.by_place = {}             # standing place -> [(atom position, achiever action)]
+        for pos, v in cells.atoms:
+            for a in cells.achievers.get(v, ()):
+                place = (pos[0] - a.write[0], pos[1] - a.write[1], pos[2] - a.write[2])
+                self.by_place.setdefault(place, []).append((pos, a.action))
+
+    def walk(self, state, todo, eligible, limit):
+        """Breadth-first over the actions that write no cell, to the nearest place where one
+        achiever writes an eligible atom: the path [(action, state)] ending with that write,
+        or None."""
+        apply, agent, read, default = self.model.apply_fns, self.model.agent_position, self.read, self.model.grid.default
+        parents = {state: None}
+        frontier = [state]
+        while frontier and len(parents) <= limit:
+            nxt = []
+            for s in frontier:
+                tail = self._finish(s, todo, eligible, LIFTS)
+                if tail is not None:
+                    path = tail
+                    while parents[s] is not None:
+                        prev, a = parents[s]
+                        path.append((a, s))
+                        s = prev
+                    path.reverse()
+                    return path
+                self.expanded += 1
+                for a in self.walkers:
+                    try:
+                        n = apply[a](s)
+                    except ModelError:
+                        continue
+                    self.generated += 1
+                    if n is None or n in parents or self.model.is_failure(n) or self.breaks_protected(s, a, n):
+                        continue
+                    parents[n] = (s, a)
+                    nxt.append(n)
+            frontier = nxt
+        return None
+
+    def breaks_protected(self, state, action, nxt) -> bool:
+        offs = self.writes.get(action, ())
+        if offs is None:   # a write whose place is not known: compare the protected cells
+            return any(self.read(nxt, *p) != v for p, v in self.protected.items())
+        if not offs:
+            return False
+        x, y, z = self.model.agent_position(state)
+        for dx, dy, dz in offs:
+            p = (x + dx, y + dy, z + dz)
+            v = self.protected.get(p)
+            if v is not None and self.read(nxt, *p) != v:
+                return True
+        return False
+
+    def _finish(self, s, todo, eligible, lifts):
+        """From `s`, an achiever that writes an eligible atom, after up to `lifts` actions
+        that write and move: the steps [(action, state)] in reverse order, or None."""
+        apply, read = self.model.apply_fns, self.read
+        for pos, action in self.by_place.get(self.model.agent_position(s), ()):
+            value = todo.get(pos)
+            if value is None or not eligible(pos):
+                continue
+            try:
+                n = apply[action](s)
+            except ModelError:
+                continue
+            if n is not None and read(n, *pos) == value and not self.breaks_protected(s, action, n):
+                return [(action, n)]
+        if lifts:
+            for a in self.lifts:
+                try:
+                    n = apply[a](s)
+                except ModelError:
+                    continue
+                if n is None or self.model.is_failure(n) or self.breaks_protected(s, a, n):
+                    continue
+                tail = self._finish(n, todo, eligible, lifts - 1)
+                if tail is not None:
+                    return tail + [(a, n)]
+        return None
+
+    def reach(self, state, atom):
+        """A greedy search from `state` to one where `atom` holds and no protected atom
+        changed: (the path's [(action, state)], "ok" | "failed" | budget name)."""
+        (pos, value), read = atom, self.read
+        default, protected = self.model.grid.default, self.protected
+        places = [p for p in self.cells.standing(atom) if protected.get(p, default) == default]
+        agent = self.model.agent_position
+
+        def h(s):
+            if read(s, *pos) == value:
+                return 0
+            here = agent(s)
+            return 1 + min((_distance(here, p) for p in places), default=0)
+
+        tie = itertools.count()
+        parents = {state: None}
+        frontier = [(h(state), 0, next(tie), state)]
+        local = 0
+        while frontier:
+            hv, g, _, s = heapq.heappop(frontier)
+            if hv == 0:
+                path = []
+                while parents[s] is not None:
+                    prev, a = parents[s]
+                    path.append((a, s))
+                    s = prev
+                path.reverse()
+                return path, "ok"
+            local += 1
+            self.expanded += 1
+            if local > self.local_limit:
+                return None, "failed"
+            if not self.expanded & self.meter.mask:
+                which = self.meter.check(self.expanded, self.generated, len(parents))
+                if which:
+                    return None, which
+            for a, n in self.succ(s):
+                self.generated += 1
+                if n in parents or self.model.is_failure(n) or self.breaks_protected(s, a, n):
+                    continue
+                parents[n] = (s, a)
+                heapq.heappush(frontier, (h(n), g + 1, next(tie), n))
+        return None, "failed"
+
+    @staticmethod
+    def _forgive(set_aside):
+        for p in list(set_aside):
+            set_aside[p] -= 1
+            if set_aside[p] <= 0:
+                del set_aside[p]
+
+    def _achieved(self, state, todo, released, blockers):
+        """Protect the atoms that now hold; release the atoms that waited for them."""
+        for p in [p for p, v in todo.items() if self.read(state, *p) == v]:
+            self.protected[p] = todo.pop(p)
+            for q in released.get(p, ()):
+                blockers[q] -= 1
+
+    def run(self, start):
+        """Serialise the cell atoms from `start`: (the plan's actions, the state reached,
+        None or a budget name)."""
+        cells, read = self.cells, self.read
+        waits = orders(cells)                 # q -> atoms that must come before q
+        blockers = {q: len(ps) for q, ps in waits.items()}
+        released = {}                          # p -> [q] that wait for p
+        for q, ps in waits.items():
+            for p in ps:
+                released.setdefault(p, []).append(q)
+        todo = {}
+        for pos, v in cells.atoms:
+            if read(start, *pos) == v:
+                self.protected[pos] = v
+            else:
+                todo[pos] = v
+        for pos in self.protected:
+            for q in released.get(pos, ()):
+                blockers[q] -= 1
+        plan, state, set_aside = [], start, {}    # set aside: position -> achievements left to wait
+        level = support_levels(cells, read, start)
+        late = len(level) + 1      # atoms never made ready by the others come last
+        while todo:
+            which = self.meter.check(self.expanded, self.generated, self.expanded)
+            if which:
+                return plan, state, which
+            lowest = min((level.get(p, late) for p in todo if p not in set_aside), default=late)
+
+            def eligible(p):
+                return level.get(p, late) <= lowest and p not in set_aside and blockers.get(p, 0) <= 0 \
+                    and ready(cells, read, state, (p, todo[p]))
+            path = self.walk(state, todo, eligible, self.local_limit)
+            if path is not None:
+                plan.extend(a for a, _ in path)
+                state = path[-1][1]
+                self._achieved(state, todo, released, blockers)
+                self._forgive(set_aside)
+                continue
+            here = self.model.agent_position(state)
+            candidates = sorted(
+                (min((_distance(here, p) for p in cells.standing((pos, v))), default=0), pos)
+                for pos, v in todo.items() if eligible(pos))
+            progressed = False
+            for _, pos in candidates:
+                path, why = self.reach(state, (pos, todo[pos]))
+                if why not in ("ok", "failed"):
+                    return plan, state, why
+                if path is None:
+                    set_aside[pos] = RETRY
+                    continue
+                plan.extend(a for a, _ in path)
+                state = path[-1][1] if path else state
+                self._achieved(state, todo, released, blockers)
+                self._forgive(set_aside)
+                progressed = True
+                break
+            if not progressed and lowest >= late:
+                return plan, state, None
+            if not progressed:      # every atom of the lowest level is set aside: the next level
+                set_aside.update((p, RETRY) for p in todo if level.get(p, late) <= lowest)
+        return plan, state, None
+
+
+@declare(Option("local_limit", int, 4000, "expansions of one atom's greedy search before it is set aside", low=1))
+def solve(model, budget: Budget, progress=None, local_limit: int = 4000, **options) -> Result:
+    """Builds a goal of many cell atoms one atom at a time (satisficing), reporting a lower bound."""
+    from . import get_solver
+    meter = Meter(budget, progress)
+    cells = goal_cells(model)
+    if cells is None:   # no cell atoms: nothing to serialise
+        result = get_solver("gbfs")(model, budget, progress)
+        result.solver = NAME
+        return result
+    builder = _Builder(model, cells, meter, budget, local_limit)
+    bound = lower_bound(cells, model, model.initial, builder.read)
+    plan, state, why = builder.run(model.initial)
+    stats = dict(expanded=builder.expanded, generated=builder.generated, stored=builder.expanded)
+    if why is not None:
+        return budget_result(NAME, why, meter, lower_bound=bound, **stats)
+    tail, tail_result = [], None
+    if not model.is_goal(state):   # the fallback: gbfs from here, with what is left of the budget
+        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed())
+        rest = get_solver("gbfs")(dataclasses.replace(model, initial=state),
+                                  Budget(budget.max_states, left, budget.max_memory_mb), progress)
+        stats = {k: stats[k] + getattr(rest, k) for k in stats}
+        if not rest.solved:
+            rest.solver, rest.lower_bound = NAME, bound
+            rest.expanded, rest.generated, rest.stored = stats["expanded"], stats["generated"], stats["stored"]
+            return meter.finish(rest)
+        tail = [model.action_index(n) for n in rest.plan]
+    actions = [*plan, *tail]
+    return meter.finish(Result(solver=NAME, solved=True, status="solved",
+                               plan=[model.action_names[a] for a in actions],
+                               cost=sum(model.action_costs[a] for a in actions),
+                               lower_bound=bound, **stats))

@@ -1,0 +1,123 @@
+"""Structure goals (compiler/structure.py), the build solver (solvers/build.py) and its
+analysis (heuristics/goal_cells.py), `bcc generate house|wall|tower|bridge`.
+
+Optimal costs come from breadth-first search (an independent solver), never from the
+build solver's own output."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from bcc.compiler import compile_dungeon
+from bcc.generate_structures import generate_structure
+from bcc.heuristics.goal_cells import CellReader, goal_cells, lower_bound, support_levels
+from bcc.solvers import Budget, default_solver, get_solver
+
+HERE = Path(__file__).parent / "structures"
+
+
+def bcc(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "bcc", *map(str, args)], capture_output=True, text=True, cwd=cwd)
+
+
+def replays(model, plan) -> bool:
+    """The plan, stepped through the simulator's apply, reaches the goal."""
+    s = model.initial
+    for name in plan:
+        s = model.apply(model.action_index(name), s)
+        assert s is not None, name
+    return model.is_goal(s)
+
+
+def test_blueprint_compiles_to_its_cell_atoms():
+    # steps.yaml: layer 0 "##" at (2, 1, 1), (3, 1, 1); layer 1 "#." at (2, 2, 1) stone, (3, 2, 1) air.
+    model = compile_dungeon(str(HERE / "steps.yaml"))
+    assert model.report["structure"] == {"atoms": 4, "at": [2, 1, 1], "size": {"width": 2, "height": 2, "depth": 1},
+                                         "values": {"air": 1, "stone": 3}}
+    cells = goal_cells(model)
+    stone = model.grid.value_names.index("stone")
+    air = model.grid.value_names.index("air")
+    assert sorted(cells.atoms) == [((2, 1, 1), stone), ((2, 2, 1), stone), ((3, 1, 1), stone), ((3, 2, 1), air)]
+    assert not cells.rest
+    # what rests on what: the upper stone needs the one below it (builder: place on top of a block)
+    levels = support_levels(cells, CellReader(model), model.initial)
+    assert levels[(2, 1, 1)] == levels[(3, 1, 1)] == 0 and levels[(2, 2, 1)] == 1
+
+
+def test_generated_house_counts(tmp_path):
+    # 3 x 3 walls 2 high: a ring of 8 cells on 2 layers less the door's 2 = 14, a roof of 9:
+    # 23 bricks; the door's 2 cells and the inside's 1 x 1 x 2 are air: 27 atoms.
+    path = tmp_path / "house.yaml"
+    path.write_text(generate_structure("house", 3, 3, 2, material="bricks"))
+    report = compile_dungeon(str(path)).report["structure"]
+    assert report["atoms"] == 27 and report["values"] == {"air": 4, "bricks": 23}
+    # a 10 x 10 x 10 house: 36 x 10 + 100 = 460 cells of material less the door's 2
+    assert "(458 blocks)" in generate_structure("house", 10, 10, 10)
+
+
+@pytest.mark.parametrize("dungeon", ["steps.yaml", "shelter.yaml"])
+def test_build_plans_replay_and_bound_is_below_them(dungeon):
+    model = compile_dungeon(str(HERE / dungeon))
+    result = get_solver("build")(model, Budget(time_limit=120))
+    assert result.solved and replays(model, result.plan)
+    assert 0 < result.lower_bound <= result.cost
+
+
+def test_lower_bound_is_below_the_optimum():
+    # BFS's cost is optimal (unit costs); the bound must not exceed it.
+    model = compile_dungeon(str(HERE / "steps.yaml"))
+    optimum = get_solver("bfs")(model, Budget(time_limit=120))
+    assert optimum.solved
+    bound = lower_bound(goal_cells(model), model, model.initial)
+    assert 3 <= bound <= optimum.cost     # at least one action per stone to place
+
+
+def test_solve_picks_build_for_structures_only():
+    assert default_solver(compile_dungeon(str(HERE / "steps.yaml"))) == "build"
+    assert default_solver(compile_dungeon("bridge")) == "astar"
+    # a plain conjunction of fewer than 10 cell atoms is no structure
+    assert default_solver(compile_dungeon(str(HERE / "steps.yaml"), goal="block[2, 1, 1].kind == stone")) == "astar"
+
+
+def test_cli_generate_solve_validate(tmp_path):
+    out = tmp_path / "house.yaml"
+    r = bcc("generate", "house", "--width", 3, "--length", 3, "--height", 2, "--material", "bricks", "-o", out)
+    assert r.returncode == 0, r.stderr
+    r = bcc("solve", out, "--json")
+    assert r.returncode == 0, r.stderr
+    result = json.loads(r.stdout)
+    assert result["solver"] == "build" and result["lower_bound"] <= result["cost"]
+    plan = tmp_path / "plan.txt"
+    plan.write_text("".join(a + "\n" for a in result["plan"]))
+    r = bcc("validate", out, plan)
+    assert r.returncode == 0 and "valid" in r.stdout, r.stderr
+
+
+def test_goal_file_is_a_blueprint():
+    r = bcc("solve", HERE / "steps.yaml", "--goal", HERE / "roof.yaml", "--json")
+    assert r.returncode == 0, r.stderr
+    result = json.loads(r.stdout)
+    assert result["solver"] == "build" and result["goal"].startswith("structure of 1 cells")
+
+
+@pytest.mark.parametrize("layers,message", [
+    ('["#x"]', "'x' is not in the legend"),
+    ('["#####"]', "outside the world"),
+    ('["  "]', "has no cell"),
+])
+def test_bad_blueprints_are_one_line_at_their_place(tmp_path, layers, message):
+    path = tmp_path / "bad.yaml"
+    path.write_text((HERE / "steps.yaml").read_text().split("goal:")[0] +
+                    f'goal:\n  structure:\n    at: [2, 1, 1]\n    legend: {{"#": stone}}\n    layers: {layers}\n')
+    r = bcc("compile", path)
+    assert r.returncode == 2
+    assert r.stderr.count("\n") == 1 and message in r.stderr and f"{path}:" in r.stderr
+
+
+def test_bad_generate_arguments_exit_2():
+    r = bcc("generate", "house", "--width", 99)
+    assert r.returncode == 2 and "--width 99" in r.stderr
