@@ -1,7 +1,7 @@
 """An HTN planning problem as read from HDDL: the lifted domain of the PDDL front end plus
 compound tasks, methods and the problem's initial task network.
 
-Why lifted: the IPC's construction houses have tens of thousands of locations, and
+Why lifted: the IPC's construction tasks have tens of thousands of locations, and
 grounding every method over them is far larger than the part a progression search ever
 touches; the planner binds methods and actions against the state as it goes.
 

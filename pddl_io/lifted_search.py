@@ -8,8 +8,8 @@ only achiever, and what every achiever of a landmark needs), each with a distanc
 landmark's cheapest achiever can act). States are taken by that sum first, then by
 *novelty* (Lipovetzky and Geffner's best-first width search): w = 1 when a state makes
 true an atom no earlier state with the same number of missing landmarks did, 2 when it
-makes a new pair of atoms of one object (an agent's x and z), else 3. On MinePlanner's
-Easy tasks this order beat novelty first (Pickup_and_Place: 136 expansions against
+makes a new pair of atoms of one object (an agent's x and z), else 3. On the block-building
+benchmark's Easy tasks this order beat novelty first (Pickup_and_Place: 136 expansions against
 291; the others the same). Every state is queued, so the search is complete; it is not
 optimal.
 

@@ -58,7 +58,9 @@ class _Builder:
         self.movers = [i for i in c.search if not _count_writes(c.actions[i].effects)]
         self.lifts = sorted({a.action for lst in cells.achievers.values() for a in lst if a.moves} |
                             {i for i in c.search if i in self.writes and _moves(c.actions[i].effects, axes)})
-        self.walkers = self.movers + self.lifts
+        # walks may also clear a cell on the way (take a scaffold down), never fill one
+        clear = model.grid.default
+        self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
         self.by_place = {}             # standing place -> [(atom position, achiever action)]
         for pos, v in cells.atoms:
             for a in cells.achievers.get(v, ()):
