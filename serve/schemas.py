@@ -105,6 +105,7 @@ class SolveResult(BaseModel):
     initial_h: int | float | None
     episodes: list
     converged_episode: int | None
+    lower_bound: int | None = Field(None, description="build: an admissible lower bound on the plan's cost.")
 
 
 class JobStatus(BaseModel):
