@@ -67,8 +67,10 @@ LAYER_OF = {
     "bcc.compiler.dungeon": "front end",
     "bcc.compiler.ground": "front end",
     "bcc.compiler.blocks": "front end",    # a dungeon's `blocks:` text
+    "bcc.compiler.structure": "front end", # a dungeon's `structure:` goal (a blueprint) read into atoms
     "bcc.generate": "front end",           # writes dungeon YAML, checking names as the front end does
     "bcc.generate_rooms": "front end",
+    "bcc.generate_structures": "front end",  # writes structure dungeons (house, wall, tower, bridge)
     "bcc.pddl_io": "front end",            # the package docstring
     "bcc.pddl_io.read": "front end",
     "bcc.pddl_io.lifted": "front end",
