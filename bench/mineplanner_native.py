@@ -35,11 +35,8 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from engine import peak_of  # noqa: E402  (bench/engine.py: a child's CPU and peak)
+from mineplanner_tasks import LEVELS, TASKS  # noqa: E402
 
-TASKS = ["Bridge", "Build_Cabin", "Build_Cross", "Build_Shape", "Build_Wall", "Build_Well", "Climb_Place",
-         "Collect_Build_Shape", "Cut_Tree", "Gather_Multiple_Wood", "Gather_Wood", "Move_to_Location",
-         "Pickup_Diamond", "Pickup_and_Place", "Place_Wood"]
-LEVELS = ["Easy", "Medium", "Hard"]
 HUMAN_KINDS = {"move": "move", "move_and_pickup": "move", "jumpup": "jump", "jumpdown": "drop",
                "break": "break", "place": "place"}
 

@@ -47,11 +47,8 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from timed_env import timed_env  # noqa: E402
+from mineplanner_tasks import LEVELS, TASKS  # noqa: E402
 
-TASKS = ["Bridge", "Build_Cabin", "Build_Cross", "Build_Shape", "Build_Wall", "Build_Well", "Climb_Place",
-         "Collect_Build_Shape", "Cut_Tree", "Gather_Multiple_Wood", "Gather_Wood", "Move_to_Location",
-         "Pickup_Diamond", "Pickup_and_Place", "Place_Wood"]
-LEVELS = ["Easy", "Medium", "Hard"]
 VALIDATE_SECONDS = 120
 FD_MEMORY_MB = 4000  # Fast Downward's translator took 1.8 GB on an Easy task; the machine is shared
 WALL_FACTOR = 6      # the wall-clock cap, in CPU limits (a shared machine runs a process at a fraction of a core)
