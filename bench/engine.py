@@ -107,7 +107,7 @@ def peak_of(cmd: list, env: dict | None = None, timeout: float = 600, cwd: Path 
 
 def fd_driver() -> Path | None:
     try:
-        from bcc.pddl_io.fast_downward import driver
+        from bcc.solvers.fast_downward import driver
         return driver()
     except Exception:  # noqa: BLE001 - not installed: the FD columns stay empty
         return None

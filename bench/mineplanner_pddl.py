@@ -257,7 +257,7 @@ def run_bcc(domain: str, problem: str, limit: float, plan_file: str) -> dict:
 
 
 def run_fd(domain: str, problem: str, limit: float) -> dict:
-    from bcc.pddl_io.fast_downward import driver
+    from bcc.solvers.fast_downward import driver
     with tempfile.TemporaryDirectory(prefix="bcc-mp-fd-") as tmp:
         cmd = [sys.executable, str(driver()), "--alias", "lama-first", "--overall-time-limit", f"{int(limit)}s",
                "--overall-memory-limit", f"{FD_MEMORY_MB}M", "--plan-file", os.path.join(tmp, "plan"), os.path.abspath(domain), os.path.abspath(problem)]
@@ -274,7 +274,7 @@ def run_fd(domain: str, problem: str, limit: float) -> dict:
 
 def validate(domain: str, problem: str, plan: list) -> str:
     """pddl-pyvalidator's verdict on the plan, in a process of its own."""
-    code = ("import json, sys\nfrom bcc.pddl_io.plans import validate\n"
+    code = ("import json, sys\nfrom bcc.pddl_export.plans import validate\n"
             "print(json.dumps(validate(*sys.argv[1:4])))")
     with tempfile.NamedTemporaryFile("w", suffix=".plan", delete=False) as f:
         f.write("".join(a + "\n" for a in plan))
@@ -499,7 +499,7 @@ def save(args, limits: dict, rows: list) -> None:
            "changes_to_the_tasks": "the problem objects named in the domain's checkgoal action are moved into "
                                    "the domain's :constants (moved_to_constants per task); nothing else",
            "renamed_copy": "run where the original was solved" + (" and where not" if args.renamed_always else ""),
-           "validator": "pddl-pyvalidator (bcc.pddl_io.plans.validate), on the copy with constants moved",
+           "validator": "pddl-pyvalidator (bcc.pddl_export.plans.validate), on the copy with constants moved",
            "machine": {"python": platform.python_version(), "cpus": os.cpu_count()},
            "tasks": rows}
     sys.path.insert(0, str(HERE.parent.parent))

@@ -130,7 +130,7 @@ def run_bcc(config: str, domain: str, problem: str, limit: float, plan_file: str
 
 
 def run_fd(config: str, domain: str, problem: str, limit: float) -> dict:
-    from bcc.pddl_io.fast_downward import driver
+    from bcc.solvers.fast_downward import driver
     with tempfile.TemporaryDirectory(prefix="bcc-bench-fd-") as tmp:
         cmd = [sys.executable, str(driver()), "--overall-time-limit", f"{int(limit)}s", "--plan-file",
                os.path.join(tmp, "plan"), os.path.abspath(domain), os.path.abspath(problem),
@@ -154,7 +154,7 @@ def validate_plan(domain: str, problem: str, plan_file: str) -> str:
     """pddl-pyvalidator's verdict; where it refuses the plan or cannot read the files, a
     second opinion from Fast Downward's translator (`sas_replay`). Neither shares code
     with bcc's reader or grounder."""
-    code = ("import json, sys\nfrom bcc.pddl_io.plans import validate\n"
+    code = ("import json, sys\nfrom bcc.pddl_export.plans import validate\n"
             "print(json.dumps(validate(*sys.argv[1:4])))")
     try:   # a process of its own, with a limit: unified-planning's parser can take many minutes (nomystery p02)
         proc = subprocess.run([sys.executable, "-c", code, domain, problem, plan_file], capture_output=True,

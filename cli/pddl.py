@@ -37,8 +37,8 @@ def export_group():
 def export_pddl_cmd(dungeon, out_dir, max_states, time_limit, max_memory, as_json, goal):
     """Write DUNGEON as grounded STRIPS PDDL: DIR/domain.pddl and DIR/problem.pddl."""
     from ..atomic import write_text
-    from ..pddl_io.task import build_task
-    from ..pddl_io.writer import domain_text, problem_text
+    from ..pddl_export.task import build_task
+    from ..pddl_export.writer import domain_text, problem_text
     with within_budget(time_limit, max_memory, as_json, dungeon):
         model = compile_model(dungeon, goal)
         task = build_task(model, max_states)
@@ -97,7 +97,7 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
     if options.get("heuristic") in (None, "auto") and solver in ("gbfs", "wastar"):
         options["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
     elif solver == "astar" and options.get("heuristic") in (None, "auto") and options.get("weight", 1) == 1:
-        from ..pddl_io.portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
+        from ..solvers.portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
     deadline = Deadline(budget)
     model = None
     lifted = None
@@ -120,7 +120,7 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
             # The search stops a little early: freeing millions of states when it returns takes
             # time too, and the hard timer would otherwise drop its result (and counters).
             if lifted is not None:
-                from ..pddl_io.lifted_search import solve as lifted_solve
+                from ..solvers.lifted_search import solve as lifted_solve
                 optimal = solver in OPTIMAL_SOLVERS and options.get("weight", 1) == 1
                 result = _without_cycle_collector(lifted_solve, *lifted, deadline.remaining(SEARCH_SHARE),
                                                   progress=progress, optimal=optimal, solver=solver)

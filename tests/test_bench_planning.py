@@ -19,7 +19,7 @@ def load_bench():
 @pytest.mark.slow
 def test_the_planning_benchmark_reports_coverage_and_checks_costs(tmp_path):
     bench = load_bench()
-    from bcc.pddl_io.fast_downward import available
+    from bcc.solvers.fast_downward import available
     manifest = tmp_path / "manifest.txt"
     manifest.write_text("# local problems\n"
                         "local/pddl road-domain.pddl road-1.pddl\n"
@@ -41,7 +41,7 @@ def test_the_planning_benchmark_reports_coverage_and_checks_costs(tmp_path):
 
 
 def test_the_second_validator_replays_plans_on_fast_downwards_translation(tmp_path):
-    from bcc.pddl_io.fast_downward import available
+    from bcc.solvers.fast_downward import available
     if not available():
         pytest.skip("Fast Downward is not installed (pip install '.[pddl]')")
     bench = load_bench()

@@ -174,7 +174,7 @@ def test_fast_downward_exit_codes_map_to_statuses(monkeypatch, tmp_path, code, s
     """232 is what `bcc solve grid --solver fd --time-limit 0.001` got: the driver's exit
     status for a translator killed by SIGXCPU; it was reported as bad input (exit 2)."""
     import subprocess
-    from bcc.pddl_io import fast_downward
+    from bcc.solvers import fast_downward
     monkeypatch.setattr(fast_downward, "driver", lambda: tmp_path / "fast-downward.py")
     monkeypatch.setattr(subprocess, "run", lambda *a, **k: subprocess.CompletedProcess(a, code, "", "log line"))
     assert fast_downward.run("d.pddl", "p.pddl", time_limit=1).status == status

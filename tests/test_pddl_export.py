@@ -15,9 +15,9 @@ from bcc.compiler import compile_dungeon
 from bcc.errors import BccError
 from bcc.generate import generate_maze
 from bcc.model_json import FORMAT, model_json
-from bcc.pddl_io.plans import to_pddl_plan
-from bcc.pddl_io.task import build_task
-from bcc.pddl_io.writer import domain_text, problem_text
+from bcc.pddl_export.plans import to_pddl_plan
+from bcc.pddl_export.task import build_task
+from bcc.pddl_export.writer import domain_text, problem_text
 from bcc.solvers import Budget, get_solver
 
 
@@ -235,7 +235,8 @@ def test_a_time_limit_is_never_kept_as_a_value_by_the_export():
     raise it only if that value is chosen. A time limit raised by a timer inside it must
     pass through: as an Exception it was kept, the export ran on, and `fd` took 7.7 s on
     a 0.02 s budget (a CI run)."""
-    from bcc.pddl_io import fast_downward, symbolic
+    from bcc.pddl_export import symbolic
+    from bcc.solvers import fast_downward
     from bcc.solvers.limits import BudgetExceeded
     for stop in (fast_downward._Expired(), BudgetExceeded("time_limit")):
         def interrupted(a, b, stop=stop):

@@ -16,7 +16,7 @@ import pytest
 
 from bcc.compiler import compile_dungeon
 from bcc.generate import generate_maze
-from bcc.pddl_io import fast_downward
+from bcc.solvers import fast_downward
 from bcc.simulate import replay
 from bcc.solvers import Budget, get_solver
 
@@ -33,8 +33,8 @@ MAZES = [(w, stones, lava, seed) for seed, (w, stones, lava) in enumerate(
 
 
 def export(model, tmp_path):
-    from bcc.pddl_io.task import build_task
-    from bcc.pddl_io.writer import domain_text, problem_text
+    from bcc.pddl_export.task import build_task
+    from bcc.pddl_export.writer import domain_text, problem_text
     task = build_task(model)
     d, p = tmp_path / "domain.pddl", tmp_path / "problem.pddl"
     d.write_text(domain_text(task))
@@ -43,13 +43,13 @@ def export(model, tmp_path):
 
 
 def check_plan_validates(task, ops, directory):
-    from bcc.pddl_io.plans import validate, validation_files
+    from bcc.pddl_export.plans import validate, validation_files
     directory.mkdir(exist_ok=True)
     assert validate(*validation_files(task, ops, str(directory))) == (True, "VALID")
 
 
 def check_fd_equals_astar(model, tmp_path, search=None, validate_fd=False):
-    from bcc.pddl_io.plans import to_pddl_plan
+    from bcc.pddl_export.plans import to_pddl_plan
     task, d, p = export(model, tmp_path)
     fd = fast_downward.run(d, p, search=search, time_limit=120)
     astar = get_solver("astar")(model, Budget(time_limit=120))
@@ -78,7 +78,7 @@ def test_fd_cost_equals_astar_on_generated_mazes(width, stones, lava, seed, tmp_
 
 @pytest.mark.parametrize("dungeon", ["grid", "bridge"])
 def test_the_validator_rejects_broken_plans(dungeon, tmp_path):
-    from bcc.pddl_io.plans import to_pddl_plan, validate, validation_files
+    from bcc.pddl_export.plans import to_pddl_plan, validate, validation_files
     model = compile_dungeon(dungeon)
     task, d, p = export(model, tmp_path)
     ops = to_pddl_plan(task, get_solver("astar")(model, Budget(time_limit=60)).plan)

@@ -283,7 +283,7 @@ def test_generated_code_holds_no_name_from_the_files(tmp_path):
 
 
 def _fast_downward():
-    fd = pytest.importorskip("bcc.pddl_io.fast_downward")
+    fd = pytest.importorskip("bcc.solvers.fast_downward")
     if not fd.available():
         pytest.skip('Fast Downward is not installed: pip install "bcc[pddl]"')
     return fd
@@ -402,7 +402,7 @@ def test_the_auto_portfolio_keeps_hand_derived_costs_in_every_phase(problem, bli
                                                                    monkeypatch):
     # `bcc import pddl` with A* auto: blind for a slice, LM-cut for a slice, then blind.
     # Whichever phase finds the plan, it has the hand-derived optimum and replays to the goal.
-    from bcc.pddl_io import portfolio
+    from bcc.solvers import portfolio
     monkeypatch.setattr(portfolio, "BLIND_SECONDS", blind_seconds)
     monkeypatch.setattr(portfolio, "LMCUT_SECONDS", lmcut_seconds)
     model = load(problem)
@@ -416,7 +416,7 @@ def test_the_auto_portfolio_keeps_hand_derived_costs_in_every_phase(problem, bli
 def test_the_portfolio_counts_every_phase():
     # Each phase starts afresh: the counters are the phases' sums, so an instant first
     # phase (one expansion, stopped at its first check) adds one to the last's count.
-    from bcc.pddl_io import portfolio
+    from bcc.solvers import portfolio
     model = load("gripper-3")
     alone = get_solver("astar")(model, Budget(time_limit=600), heuristic="lmcut")
     with pytest.MonkeyPatch.context() as mp:
@@ -431,7 +431,7 @@ def test_a_portfolio_slice_ends_on_cpu_time_at_a_progress_report(monkeypatch):
     # whose slice is spent is stopped at its report (its counters kept), and the next
     # phase runs. A stand-in for A* reports twice per call; the user's callback sees the
     # reports of phases that go on.
-    from bcc.pddl_io import portfolio
+    from bcc.solvers import portfolio
     from bcc.solvers.base import Result
     calls, reports = [], []
 
@@ -451,7 +451,7 @@ def test_a_portfolio_slice_ends_on_cpu_time_at_a_progress_report(monkeypatch):
 
 
 def test_the_portfolio_slices_follow_the_time_limit():
-    from bcc.pddl_io.portfolio import phases
+    from bcc.solvers.portfolio import phases
     assert phases(None) == [("blind", 1.0), ("lmcut", 2.0), ("blind", None)]
     assert phases(120) == [("blind", 1.0), ("lmcut", 2.0), ("blind", None)]
     assert phases(6) == [("blind", pytest.approx(0.3)), ("lmcut", pytest.approx(1.0)), ("blind", None)]
@@ -463,7 +463,7 @@ def test_the_portfolio_reports_a_proof_of_no_plan(tmp_path):
     (tmp_path / "d.pddl").write_text("""(define (domain n) (:predicates (a) (b))
       (:action flip :precondition (a) :effect (not (a))))""")
     (tmp_path / "p.pddl").write_text("(define (problem p) (:domain n) (:init (a)) (:goal (b)))")
-    from bcc.pddl_io import portfolio
+    from bcc.solvers import portfolio
     result = portfolio.solve(import_pddl(str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl")), Budget(time_limit=60))
     assert not result.solved and result.status == "no_solution"
 

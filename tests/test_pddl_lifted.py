@@ -15,8 +15,8 @@ from bcc.pddl_io.ground import TooBig, ground
 from bcc.pddl_io.importer import import_pddl
 from bcc.pddl_io.lifted import read_task
 from bcc.pddl_io.lifted_joins import JoinCompiler
-from bcc.pddl_io.lifted_landmarks import landmarks
-from bcc.pddl_io.lifted_search import Successors, solve
+from bcc.heuristics.lifted_landmarks import landmarks
+from bcc.solvers.lifted_search import Successors, solve
 from bcc.pddl_io.lifted_states import LiftedTask
 from bcc.solvers import Budget, get_solver
 
@@ -200,7 +200,7 @@ def test_domain_transition_distances(tmp_path):
     """(pos ?a ?c) is functional (move deletes the old cell as it adds the new one);
     along the one-way line c1 -> c2 -> c3 -> c4 the distance c1 to c4 is 3 moves,
     c4 to c1 cannot be done; a landmark (mark c3) is achieved by put at c3."""
-    from bcc.pddl_io.lifted_distances import FAR, Distances
+    from bcc.heuristics.lifted_distances import FAR, Distances
     (tmp_path / "d.pddl").write_text(WALK)
     (tmp_path / "p.pddl").write_text("(define (problem p) (:domain walk) (:objects r - agent c1 c2 c3 c4 - cell)"
                                      " (:init (pos r c1) (next c1 c2) (next c2 c3) (next c3 c4))"

@@ -260,7 +260,7 @@ def test_random_strips_tasks_have_the_brute_force_optimum(tmp_path, task):
 @settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(tasks())
 def test_random_strips_tasks_match_fast_downward(tmp_path, task):
-    fd = pytest.importorskip("bcc.pddl_io.fast_downward")
+    fd = pytest.importorskip("bcc.solvers.fast_downward")
     if not fd.available():
         pytest.skip('Fast Downward is not installed: pip install "bcc[pddl]"')
     domain, problem = write_task(tmp_path, task)

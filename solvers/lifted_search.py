@@ -21,12 +21,12 @@ from __future__ import annotations
 import heapq
 import itertools
 
-from ..solvers.base import Budget, Meter, Result, budget_result
-from .lifted import TRUE, Domain, Problem
-from .lifted_joins import JoinCompiler
-from .lifted_distances import Distances
-from .lifted_landmarks import landmarks
-from .lifted_states import LiftedTask
+from .base import Budget, Meter, Result, budget_result
+from ..pddl_io.lifted import TRUE, Domain, Problem
+from ..pddl_io.lifted_joins import JoinCompiler
+from ..heuristics.lifted_distances import Distances
+from ..heuristics.lifted_landmarks import landmarks
+from ..pddl_io.lifted_states import LiftedTask
 
 
 WIDTH = 2     # novelty judged on single atoms (1) or also on pairs of atoms of one object (2)

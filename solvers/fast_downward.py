@@ -21,7 +21,7 @@ from pathlib import Path
 
 from ..errors import BccError
 from ..extras import install_hint
-from ..solvers.options import Option, declare
+from .options import Option, declare
 
 DEFAULT_SEARCH = "astar(lmcut())"
 # Fast Downward's LM-cut does not take axioms (PDDL's derived predicates); its blind A* does,
@@ -122,7 +122,7 @@ def _time_left(budget, start: float) -> float | None:
 
 def _unsolved(fd, seconds: float):
     """The Result of a run that found no plan; a BccError when Fast Downward failed."""
-    from ..solvers.base import Result
+    from .base import Result
     if fd.status == "error":
         raise BccError(fd.message)
     return Result(solver="fd", solved=False, status=fd.status, seconds=seconds, message=fd.message,
@@ -133,7 +133,7 @@ def _unsolved(fd, seconds: float):
 def _solve_files(model, budget, files, search, start):
     """A model imported from PDDL: Fast Downward reads the very files bcc read, and its
     plan's steps are the model's action names (`(pick ball1 rooma left)`)."""
-    from ..solvers.base import Result
+    from .base import Result
     left = _time_left(budget, start)
     fd = run(files[0], files[1], search, left, budget.max_memory_mb, full_names=True)
     seconds = round(time.perf_counter() - start, 6)
@@ -202,9 +202,9 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
 
     The `fd` solver: export `model`, run Fast Downward, return a bcc Result."""
     from ..atomic import write_text
-    from ..solvers.base import Result
-    from .task import build_task
-    from .writer import domain_text, problem_text
+    from .base import Result
+    from ..pddl_export.task import build_task
+    from ..pddl_export.writer import domain_text, problem_text
     driver()  # fail early, with the install hint
     start = time.perf_counter()
     files = model.data("pddl_files")

@@ -23,8 +23,8 @@ from __future__ import annotations
 import itertools
 from collections import deque
 
-from .lifted import TRUE
-from .lifted_states import LiftedTask, conjuncts, free_vars, substitute
+from ..pddl_io.lifted import TRUE
+from ..pddl_io.lifted_states import LiftedTask, conjuncts, free_vars, substitute
 
 SMALL_TYPE = 4          # a variable left free is taken over its type's objects if it has this many or fewer
 MAX_INSTANCES = 64      # achiever instances kept per landmark

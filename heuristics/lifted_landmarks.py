@@ -18,8 +18,8 @@ The search counts a missing landmark as 1, plus 1 while its need is missing too.
 """
 from __future__ import annotations
 
-from .lifted import TRUE
-from .lifted_states import LiftedTask, conjuncts, free_vars, substitute
+from ..pddl_io.lifted import TRUE
+from ..pddl_io.lifted_states import LiftedTask, conjuncts, free_vars, substitute
 
 
 def landmarks(task: LiftedTask) -> list:

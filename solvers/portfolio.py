@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import time
 
-from ..solvers.base import Result
+from .base import Result
 
 BLIND_SECONDS = 1.0
 BLIND_SHARE = 1 / 20
@@ -46,8 +46,8 @@ def solve(model, budget, progress=None, **options):
     search may be a fifth of a CPU second, and which phase solves a task would then
     depend on the machine's load. A slice also ends after SLICE_WALL_FACTOR times its
     length in wall-clock time; the time limit itself stays wall-clock time."""
-    from ..solvers import Budget, get_solver
-    from ..solvers.base import Meter
+    from . import Budget, get_solver
+    from .base import Meter
     astar = get_solver("astar")
     start = time.perf_counter()
     limit = budget.time_limit
