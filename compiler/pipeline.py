@@ -53,8 +53,34 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     """Load, check, ground, analyse and emit. With `prune`, `successors` leaves out actions
     that can never apply or never matter for the goal (relevance.py); `apply` keeps all."""
     dungeon = _load(ref)
-    goal_src = _goal(dungeon, goal)
-    # Pass 1 finds which attributes and grid layers actions change; pass 2 folds the rest.
+    task = _ground(dungeon, _goal(dungeon, goal))
+    layout, initial, reach, an = _lay_out(task)
+    search = (sorted(relevant_actions(task.actions, sorted(reach.applicable), task.goal, task.failure, an))
+              if prune else list(range(len(task.actions))))
+    enum_sizes = {n: len(e.values) for n, e in dungeon.domain.enums.items()}
+    emitter = Emitter(layout, enum_sizes)
+    ns, source = emitter.build(task.actions, task.goal, task.failure, search)
+    _check_start(task.grounder, emitter, ns, dungeon, initial)
+    return _model(task, layout, initial, reach, an, search, ns, source, enum_sizes)
+
+
+@dataclass
+class _Ground:
+    """A dungeon's ground task: its actions, goal and failure condition as IR."""
+    dungeon: Dungeon
+    goal_src: Expr
+    grounder: Grounder
+    actions: list           # emit.GroundAction
+    dynamic: set            # the object attributes some action writes
+    layers: set | None      # the grid layers some action writes (None: a computed layer)
+    goal: object
+    failure: object
+    n_values: int           # values a grid cell may hold
+
+
+def _ground(dungeon: Dungeon, goal_src: Expr) -> _Ground:
+    """Ground in two passes: the first finds which attributes and grid layers actions
+    change, the second folds every other read into a constant."""
     Grounder(dungeon, None).check_domain()
     discovery = Grounder(dungeon, None)
     _ground_actions(discovery, dungeon)
@@ -65,41 +91,45 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     grid_ys = [y for kind, y in g.writes if kind == "<grid>"]
     layers = None if any(not isinstance(y, ir.Const) for y in grid_ys) else \
         {int(y.value) for y in grid_ys if 0 <= y.value < dungeon.height}
-    goal_ir = g.bool_expr(goal_src.node, Ctx(goal_src))
     dom = dungeon.domain
-    failure_ir = g.bool_expr(dom.failure.node, Ctx(dom.failure)) if dom.failure else ir.FALSE
+    failure = g.bool_expr(dom.failure.node, Ctx(dom.failure)) if dom.failure else ir.FALSE
     venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
-    n_values = len(venum.values)
+    return _Ground(dungeon, goal_src, g, actions, dynamic, layers,
+                   g.bool_expr(goal_src.node, Ctx(goal_src)), failure, len(venum.values))
 
-    # Relaxed reachability refines which layers really change, and which actions can apply.
-    layout = make_layout(g, dungeon, dynamic, layers)
+
+def _lay_out(task: _Ground):
+    """The state layout, laid out twice: relaxed reachability from the first start refines
+    which layers really change (and which actions can apply), and the second layout
+    stores only those."""
+    g, dungeon = task.grounder, task.dungeon
+    layout = make_layout(g, dungeon, task.dynamic, task.layers)
     initial = layout.initial(g, dungeon)
-    reach = reachable(layout, actions, {s.var: initial[s.index] + s.lo for s in layout.slots}, n_values)
-    layout = make_layout(g, dungeon, dynamic, {y for y, vals in reach.written.items() if vals})
-    initial = layout.initial(g, dungeon)
-    an = Analysis(layout, n_values)
-    if prune:
-        search = sorted(relevant_actions(actions, sorted(reach.applicable), goal_ir, failure_ir, an))
-    else:
-        search = list(range(len(actions)))
-    enum_sizes = {n: len(e.values) for n, e in dom.enums.items()}
-    emitter = Emitter(layout, enum_sizes)
-    ns, source = emitter.build(actions, goal_ir, failure_ir, search)
-    _check_start(g, emitter, ns, dungeon, initial)
+    reach = reachable(layout, task.actions, {s.var: initial[s.index] + s.lo for s in layout.slots}, task.n_values)
+    layout = make_layout(g, dungeon, task.dynamic, {y for y, vals in reach.written.items() if vals})
+    return layout, layout.initial(g, dungeon), reach, Analysis(layout, task.n_values)
+
+
+def _model(task: _Ground, layout, initial: bytes, reach, an: Analysis, search: list, ns: dict, source: str,
+           enum_sizes: dict) -> Model:
+    """The Model: the generated functions, the state's variables and grid, the agent's
+    position, and what layers above build on demand (`lazy`)."""
+    dungeon, actions, dom = task.dungeon, task.actions, task.dungeon.domain
 
     @functools.lru_cache(maxsize=1)
     def dense_functions():
         """The same functions over the dense layout (`Model.dense`), for the PDDL export."""
-        dense_ns, _ = Emitter(layout, enum_sizes, compact=False).build(actions, goal_ir, failure_ir, search)
+        dense_ns, _ = Emitter(layout, enum_sizes, compact=False).build(actions, task.goal, task.failure, search)
         return dense_ns
 
+    venum = dom.enums[dom.classes[dungeon.grid_class].attrs[_grid_value_attr(dungeon)].type]
     grid = Grid(dungeon.width, dungeon.depth, dungeon.height, layout.grid_base, layout.layers,
                 layout.static_grid, tuple(venum.values), layout.grid_default)
     variables = tuple(Variable(s.var.label, s.index, s.lo, s.hi, s.var.type,
                                tuple(dom.enums[s.var.type].values) if s.var.type in dom.enums else ())
                       for s in layout.slots)
     position, static_pos, position_vars = _position(dungeon, layout)
-    goal_positions = _goal_positions(an, reach, goal_ir, position, static_pos, position_vars, layout)
+    goal_positions = _goal_positions(an, reach, task.goal, position, static_pos, position_vars, layout)
     steps = position_steps(actions, search, position_vars, position)
 
     layer_expanders = functools.lru_cache(maxsize=1)(ns["_build_layers"])
@@ -111,8 +141,30 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         names = lambda d: {actions[a].name: [actions[b].name for b in bs] for a, bs in d.items()}
         return {"undone_by": names(ns["_undo"]), "skipped_after": names(ns["_skips"])}
 
-    compiled = Compiled(layout, actions, search, goal_ir, failure_ir, reach, n_values, initial, source, position_vars, ns)
-    report = {
+    compiled = Compiled(layout, actions, search, task.goal, task.failure, reach, task.n_values, initial, source,
+                        position_vars, ns)
+    return Model(
+        name=dungeon.name, path=dungeon.path, goal_text=task.goal_src.text,
+        action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
+        initial=initial, successors=ns["successors"], live_successors=ns["live"],
+        fresh_successors=ns["fresh"],
+        apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
+        why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
+        pre_texts=tuple(tuple(a.pre_text) for a in actions),
+        is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
+        position=position, position_static=static_pos, goal_positions=goal_positions, position_steps=steps,
+        report=_report(task, layout, initial, reach, search, goal_positions), source=source,
+        display=_display(dungeon, layout),
+        search_actions=tuple(search), lazy={"compiled": lambda: compiled,
+                                                    "layer_expanders": layer_expanders,
+                                                    "layer_skips": layer_skips,
+                                                    "dense_functions": dense_functions})
+
+
+def _report(task: _Ground, layout, initial: bytes, reach, search: list, goal_positions) -> dict:
+    """What `bcc compile --json` says about the compile (Model.report)."""
+    dungeon, actions, dom, g = task.dungeon, task.actions, task.dungeon.domain, task.grounder
+    return {
         "dungeon": dungeon.name, "domain": dom.name, "size": dungeon.sizes,
         "classes": {c: {"attributes": {a: ad.type for a, ad in cd.attrs.items()}, "key": cd.key}
                     for c, cd in dom.classes.items()},
@@ -131,26 +183,11 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
         # a state: the variables, then 4 bytes per cell that differs from the start
         "state_bytes": {"start": len(initial), "per_changed_cell": 4,
                         "worst": len(initial) + 4 * layout.mutable_cells, "dense": layout.size},
-        "goal": goal_src.text,
+        "goal": task.goal_src.text,
         "goal_positions": None if goal_positions is None else len(goal_positions),
         "structure": dungeon.structure.summary() if dungeon.structure is not None else None,
         "warnings": [str(w) for w in dungeon.warnings],
     }
-    return Model(
-        name=dungeon.name, path=dungeon.path, goal_text=goal_src.text,
-        action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
-        initial=initial, successors=ns["successors"], live_successors=ns["live"],
-        fresh_successors=ns["fresh"],
-        apply_fns=tuple(ns[f"apply_{i}"] for i in range(len(actions))),
-        why_fns=tuple(ns[f"why_{i}"] for i in range(len(actions))),
-        pre_texts=tuple(tuple(a.pre_text) for a in actions),
-        is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
-        position=position, position_static=static_pos, goal_positions=goal_positions, position_steps=steps,
-        report=report, source=source, display=_display(dungeon, layout),
-        search_actions=tuple(search), lazy={"compiled": lambda: compiled,
-                                                    "layer_expanders": layer_expanders,
-                                                    "layer_skips": layer_skips,
-                                                    "dense_functions": dense_functions})
 
 
 def _check_start(g: Grounder, emitter: Emitter, ns: dict, dungeon: Dungeon, initial: bytes) -> None:
