@@ -5,8 +5,7 @@ import sys
 
 import click
 
-from .shared import (clear_progress, json_option, max_memory_option, print_result, progress_enabled, solver_request,
-                     time_limit_option)
+from .shared import clear_progress, json_option, max_memory_option, print_result, progress_enabled, time_limit_option
 
 
 @click.command("hddl")
@@ -29,29 +28,19 @@ def import_hddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
     and --ipc-plan writes it in the IPC format, which the competition's verifier reads."""
     from ..atomic import check_writable, write_text
     from ..hddl.read import read_hddl
+    from ..run import Request, run
     from ..solvers import Budget, get_solver
-    from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
-    default = Budget.default()
-    budget = Budget(max_states=max_states, time_limit=time_limit,
-                    max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
-    solve = get_solver(solver)
-    options = solver_request(solver, {})
-    if getattr(solve, "input", None) != "task network":
+    if getattr(get_solver(solver), "input", None) != "task network":
         from ..errors import BccError
         raise BccError(f"--solver {solver} plans dungeons, not task networks: use --solver htn")
-    deadline = Deadline(budget)
-    htn = None
-    try:
-        with hard_limits(budget):
-            htn = read_hddl(domain, problem)
-            for path in (output, ipc_plan):
-                if path:
-                    check_writable(path)
-            progress = progress_enabled()
-            result = solve(htn, deadline.remaining(0.97), progress=progress, **options)
-            clear_progress(progress)
-    except BudgetExceeded as exc:
-        result = exceeded_result(solver, exc.which, deadline)
+    for path in (output, ipc_plan):
+        if path:
+            check_writable(path)
+    progress = progress_enabled()
+    ran = run(Request(lambda: read_hddl(domain, problem), solver, {}, Budget(max_states, time_limit, max_memory),
+                      progress, search_share=0.97))
+    clear_progress(progress)
+    result, htn = ran.result, ran.model
     if result.solved:
         if output:
             write_text(output, "".join(a + "\n" for a in result.plan))

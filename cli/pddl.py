@@ -3,11 +3,12 @@ from __future__ import annotations
 
 import os
 import sys
+from typing import NamedTuple
 
 import click
 
 from .shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option,
-                          max_memory_option, print_result, progress_enabled, solver_flags, solver_request,
+                          max_memory_option, print_result, progress_enabled, solver_flags, solver_given,
                           time_limit_option, within_budget)
 
 
@@ -18,6 +19,12 @@ SEARCH_SHARE = 0.97   # of the time left after importing: the rest frees the sea
 # inventory counts (MinePlanner's tasks) needs far more.
 MAX_GROUND_WORK = 600_000
 OPTIMAL_SOLVERS = ("astar", "bfs", "idastar")   # on a lifted task: a search by cost (with weight 1)
+
+
+class Lifted(NamedTuple):
+    """A PDDL task searched without grounding (solvers/lifted_search.py)."""
+    domain: object
+    problem: object
 
 
 @click.group("export")
@@ -86,59 +93,57 @@ def import_pddl_cmd(domain, problem, solver, time_limit, max_states, max_memory,
     of the actions' costs (`:action-costs`). A task too big to ground (--grounding auto)
     is searched lifted: a solver that is optimal searches by cost, any other runs
     best-first width search (docs/pddl.md)."""
-    from ..atomic import write_text
+    from ..atomic import check_writable, write_text
+    from ..run import Request, run
     from ..solvers import Budget, get_solver
-    from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
-    default = Budget.default()
-    budget = Budget(max_states=max_states, time_limit=time_limit,
-                    max_memory_mb=max_memory if max_memory is not None else default.max_memory_mb)
+    from ..solvers.options import check_options
+    given, spell = solver_given(solver_options)
+    options = check_options(solver, given, spell)   # typed, to choose the search below; the run checks `given` too
     solve = get_solver(solver)
-    options = solver_request(solver, solver_options)   # the options bcc solve takes, checked the same way
     if options.get("heuristic") in (None, "auto") and solver in ("gbfs", "wastar"):
-        options["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
+        given["heuristic"] = "hff"   # the grid's pattern database is blind on PDDL: the relaxed plan is not
     elif solver == "astar" and options.get("heuristic") in (None, "auto") and options.get("weight", 1) == 1:
         from ..solvers.portfolio import solve   # blind, LM-cut, then blind, each for a slice (all optimal)
-    deadline = Deadline(budget)
-    model = None
-    lifted = None
-    try:
-        with hard_limits(budget):
-            from ..pddl_io.ground import TooBig
-            from ..pddl_io.importer import import_pddl
-            if grounding == "lifted":
-                from ..pddl_io.lifted import read_task
-                lifted = read_task(domain, problem)
-            else:
-                try:
-                    model = import_pddl(domain, problem, max_work=MAX_GROUND_WORK if grounding == "auto" else None)
-                except TooBig as exc:
-                    lifted = exc.task
-            if output:
-                from ..atomic import check_writable
-                check_writable(output)
-            progress = progress_enabled()
-            # The search stops a little early: freeing millions of states when it returns takes
-            # time too, and the hard timer would otherwise drop its result (and counters).
-            if lifted is not None:
-                from ..solvers.lifted_search import solve as lifted_solve
-                optimal = solver in OPTIMAL_SOLVERS and options.get("weight", 1) == 1
-                result = _without_cycle_collector(lifted_solve, *lifted, deadline.remaining(SEARCH_SHARE),
-                                                  progress=progress, optimal=optimal, solver=solver)
-            else:
-                result = _without_cycle_collector(solve, model, deadline.remaining(SEARCH_SHARE),
-                                                  progress=progress, **options)
-            clear_progress(progress)
-    except BudgetExceeded as exc:
-        result = exceeded_result(solver, exc.which, deadline)
+    optimal = solver in OPTIMAL_SOLVERS and options.get("weight", 1) == 1
+    if output:
+        check_writable(output)
+
+    def load():
+        from ..pddl_io.ground import TooBig
+        from ..pddl_io.importer import import_pddl
+        from ..pddl_io.lifted import read_task
+        if grounding == "lifted":
+            return Lifted(*read_task(domain, problem))
+        try:
+            return import_pddl(domain, problem, max_work=MAX_GROUND_WORK if grounding == "auto" else None)
+        except TooBig as exc:
+            return Lifted(*exc.task)
+
+    def search(task, budget, progress=None, **options):
+        if isinstance(task, Lifted):
+            from ..solvers.lifted_search import solve as lifted_solve
+            return _without_cycle_collector(lifted_solve, task.domain, task.problem, budget, progress=progress,
+                                            optimal=optimal, solver=solver)
+        return _without_cycle_collector(solve, task, budget, progress=progress, **options)
+
+    progress = progress_enabled()
+    # The search stops a little early: freeing millions of states when it returns takes
+    # time too, and the hard timer would otherwise drop its result (and counters).
+    ran = run(Request(load, solver, given, Budget(max_states, time_limit, max_memory), progress, spell=spell,
+                      solve=search, search_share=SEARCH_SHARE))
+    clear_progress(progress)
+    result = ran.result
+    lifted = ran.model if isinstance(ran.model, Lifted) else None
+    model = None if lifted is not None else ran.model
     if output and result.solved:
         write_text(output, "".join(a + "\n" for a in result.plan))
     report = model.report if model is not None else {}
     name = model.name if model is not None else problem
     if lifted is not None:
-        name = lifted[1].name
+        name = lifted.problem.name
         sys.exit(print_result(result, name, problem, as_json,
                               {"problem": name, "atoms": None, "grounded_actions": None,
-                               "action_costs": lifted[1].metric, "lifted": True},
+                               "action_costs": lifted.problem.metric, "lifted": True},
                               details="; searched lifted"))
     sys.exit(print_result(result, name, problem, as_json,
                           {"problem": name, "atoms": report.get("atoms"),

@@ -9,6 +9,11 @@ that caps itself says `hard=False`), load the model, give a solver that declares
 `optimal_cost` A*'s cost within half the time left (a learner's `converged_episode` is
 measured against it), and solve. A budget spent outside the solver's own checks
 (compiling, a heuristic's table) still ends as a Result with status "budget".
+
+What is loaded is usually a `Model` (a dungeon, a grounded PDDL task); it may be another
+task a solver reads (an HDDL task network, a PDDL task too big to ground, searched
+lifted): the steps are the same, and choosing the solver by the model or giving it a
+reference cost applies to a Model only.
 """
 from __future__ import annotations
 
@@ -27,7 +32,7 @@ class Request:
     """What to run. `options` maps option names, as users write them, to values (text from
     the command line, typed from JSON or YAML; None for not given); `spell(name)` names an
     option in an error as the caller's users write it (`--known-after`)."""
-    load: Callable[[], Model]            # compiles or imports the model, inside the budget
+    load: Callable[[], object]           # compiles or imports the model (or task), inside the budget
     solver: str = "astar"
     options: dict = field(default_factory=dict)
     budget: Budget = field(default_factory=Budget)
@@ -42,7 +47,7 @@ class Request:
 @dataclass
 class Ran:
     result: Result
-    model: Model | None                  # None when the budget ran out before it was loaded
+    model: object                        # what `load` returned (a Model, ...); None when the budget ran out first
 
 
 def run(request: Request) -> Ran:
@@ -59,10 +64,11 @@ def run(request: Request) -> Ran:
     try:
         with hard_limits(budget) if request.hard else contextlib.nullcontext():
             model = request.load()
-            if request.pick and default_solver(model) != solver:
+            is_model = isinstance(model, Model)
+            if request.pick and is_model and default_solver(model) != solver:
                 solver = default_solver(model)
                 solve = get_solver(solver)
-            if "optimal_cost" in keywords_of(get_solver(solver)):
+            if is_model and "optimal_cost" in keywords_of(get_solver(solver)):
                 options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
             result = solve(model, deadline.remaining(request.search_share), progress=request.progress, **options)
     except BudgetExceeded as exc:
