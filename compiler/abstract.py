@@ -141,7 +141,7 @@ class Abstract:
         non-relational refinement, sound because only values violating a hard condition go.
         Returns whether some value set shrank (if not, every evaluation stays as it was)."""
         shrank = False
-        for cond in _conjuncts(conditions):
+        for cond in ir.conjuncts(conditions):
             if not isinstance(cond, ir.Cmp):
                 continue
             free = [i for i, o in enumerate(cond.operands) if not isinstance(o, ir.Const)]
@@ -185,14 +185,6 @@ _RULES = {t: getattr(Abstract, "e_" + t.__name__) for t in vars(ir).values()
 
 def maybe_true(value) -> bool:
     return value is None or True in value
-
-
-def _conjuncts(conditions):
-    for c in conditions:
-        if isinstance(c, ir.BoolOp) and c.op == "and":
-            yield from _conjuncts(c.items)
-        else:
-            yield c
 
 
 def _interval_cmp(op, alo, ahi, blo, bhi) -> tuple[bool, bool]:

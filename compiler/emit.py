@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from ..errors import BccError, InternalError, ModelError
 from ..model import cell_entries, fresh_from, pack_entry
 from . import ir
+from .access import CELLS, effect_locals, reads, state_vars, writes
 from .layout import Layout
 
 
@@ -35,69 +36,25 @@ class GroundAction:
     effects: tuple      # IR effects
 
 
-def _effect_locals(effects, acc: set) -> set:
-    for e in effects:
-        if isinstance(e, ir.When):
-            acc |= ir.locals_of(e.cond)
-            _effect_locals(e.then, acc)
-            _effect_locals(e.orelse, acc)
-        else:
-            for part in vars(e).values():
-                if not isinstance(part, (ir.StateVar, str)):
-                    acc |= ir.locals_of(part)
-    return acc
-
-
-def _writes_cells(effects) -> bool:
-    for e in effects:
-        if isinstance(e, ir.SetCell):
-            return True
-        if isinstance(e, ir.When) and (_writes_cells(e.then) or _writes_cells(e.orelse)):
-            return True
-    return False
-
-
 def _var_reads(node) -> tuple[set, bool]:
     """The variables an expression reads, and whether it reads anything else (a cell, a
     keyed attribute chosen at run time), which makes it depend on any write."""
-    if isinstance(node, ir.Var):
-        return {node.var}, False
-    complex_ = isinstance(node, (ir.VarAt, ir.Cell, ir.CellLoop))
-    out: set = set()
-    for child in ir.children(node):
-        r, c = _var_reads(child)
-        out |= r
-        complex_ |= c
-    return out, complex_
+    found = reads(node)
+    plain = state_vars(found)
+    return plain, len(plain) < len(found)
 
 
 def _fixed_reads(node, layout: Layout) -> tuple[set, bool]:
     """`_var_reads`, where a cell of a layer no action changes (its x and z aside) reads
     nothing that can change: a goal "stand on a cell of this kind" reads the position only."""
-    if isinstance(node, ir.Cell) and isinstance(node.y, ir.Const) and layout.layer_index(node.y.value) is None:
-        x, cx = _fixed_reads(node.x, layout)
-        z, cz = _fixed_reads(node.z, layout)
-        return x | z, cx or cz
-    if isinstance(node, ir.Var):
-        return {node.var}, False
-    complex_ = isinstance(node, (ir.VarAt, ir.Cell, ir.CellLoop))
-    out: set = set()
-    for child in ir.children(node):
-        r, c = _fixed_reads(child, layout)
-        out |= r
-        complex_ |= c
-    return out, complex_
+    found = reads(node, fixed_layer=lambda y: layout.layer_index(y) is None)
+    plain = state_vars(found)
+    return plain, len(plain) < len(found)
 
 
 def _writes_any(effects, variables: set, layout: Layout) -> bool:
     """May the effects change one of `variables` (a keyed write may change any)?"""
-    for e in effects:
-        if isinstance(e, ir.When):
-            if _writes_any(e.then, variables, layout) or _writes_any(e.orelse, variables, layout):
-                return True
-        elif isinstance(e, ir.SetVarAt) or isinstance(e, ir.SetVar) and e.var in variables:
-            return True
-    return False
+    return any(isinstance(w, tuple) or w in variables for w in writes(effects))
 
 
 def _delta_slots(effects, layout: Layout) -> set | None:
@@ -466,7 +423,7 @@ class Emitter:
             yield from need(ir.locals_of(cond))
             yield "pre", self.ex(cond)
             self.learn(cond)   # what follows runs only where `cond` held
-        yield from need(_effect_locals(a.effects, set()))
+        yield from need(effect_locals(a.effects))
 
     def learn(self, cond) -> None:
         """Record the bounds a precondition puts on locals (`0 <= v < 14`), so that reads
@@ -515,7 +472,7 @@ class Emitter:
                 lines[:2] = [f"{indent}_d = " + lines[1][len(first):]]
             return lines, "(_I + _d).to_bytes(_L, 'little')"
         lines = [f"{indent}n = bytearray(s)"]
-        writes_cells = self.compact and _writes_cells(a.effects)
+        writes_cells = self.compact and CELLS in writes(a.effects)
         if writes_cells:
             lines.append(f"{indent}w = {{}}")
         lines += self.effects(a.effects, indent, a.name)

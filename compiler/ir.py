@@ -173,6 +173,36 @@ def children(node) -> tuple:
     return ()
 
 
+def conjuncts(conditions, de_morgan: bool = False) -> list:
+    """The conjuncts of a condition (a list or tuple of conditions is their conjunction),
+    `and` flattened. With `de_morgan`, `True` is dropped, `not (a or b)` is read as `not a`,
+    `not b` and `not not a` as `a`: the relaxed view splits a condition as far as it goes."""
+    out: list = []
+    for c in conditions if isinstance(conditions, (list, tuple)) else (conditions,):
+        if isinstance(c, BoolOp) and c.op == "and":
+            out.extend(conjuncts(c.items, de_morgan))
+        elif not de_morgan:
+            out.append(c)
+        elif isinstance(c, Const) and c.value is True:
+            continue
+        elif isinstance(c, Not) and isinstance(c.operand, BoolOp) and c.operand.op == "or":
+            out.extend(conjuncts(tuple(negate(item) for item in c.operand.items), True))
+        elif isinstance(c, Not) and isinstance(c.operand, Not):
+            out.extend(conjuncts(c.operand.operand, True))
+        else:
+            out.append(c)
+    return out
+
+
+def negate(node):
+    """`not node`, a double negation or a constant folded."""
+    if isinstance(node, Not):
+        return node.operand
+    if isinstance(node, Const):
+        return Const(not node.value, "bool")
+    return Not(node)
+
+
 def locals_of(node) -> set:
     """Names of the Local variables an expression reads."""
     out = {node.name} if isinstance(node, Local) else set()

@@ -25,7 +25,8 @@ from .emit import Emitter, GroundAction
 from .ground import Ctx, Grounder, check_nesting
 from .layout import make_layout
 from .reachability import Analysis, reachable
-from .relevance import reads, relevant_actions
+from .access import reads
+from .relevance import relevant_actions
 from .source import Origin
 from .steps import position_steps
 
@@ -336,7 +337,7 @@ def _goal_positions(an: Analysis, reach, goal_ir, position, static_pos, position
     axes = [(value, value) if dyn is None else (layout.slots[dyn[0]].lo, layout.slots[dyn[0]].hi)
             for dyn, value in zip(position, static_pos)]
     dynamic = [var for var, dyn in zip(position_vars, position) if dyn is not None]
-    read = reads(goal_ir, an, {}, set())
+    read = reads(goal_ir, vars_of=an.vars_of)
     if not read & set(dynamic):
         if maybe_true(Abstract({}, cell, layer, sets=dict(reach.values), var_at=an.var_at).eval(goal_ir)):
             return tuple(itertools.product(*(range(lo, hi + 1) for lo, hi in axes)))

@@ -74,8 +74,8 @@ class Predicates:
 
     def reads(self, text: str) -> tuple:
         """What the expression reads: (state indices of variables, whether it reads the grid)."""
-        from ..compiler.relevance import CELLS, reads
-        read = reads(self.predicate(text).ir, self._an, {}, set())
+        from ..compiler.access import CELLS, reads
+        read = reads(self.predicate(text).ir, vars_of=self._an.vars_of)
         index = tuple(sorted(self._layout.by_var[v].index for v in read if v != CELLS and v in self._layout.by_var))
         return index, CELLS in read
 

@@ -9,7 +9,7 @@ import time
 
 from ..compiler import ir
 from ..compiler.abstract import Abstract
-from ..compiler.relevance import CELLS, effect_reads_writes, reads
+from ..compiler.access import CELLS, action_access, reads
 from .backward import backward_distances, ranges, unique
 from .counting_data import (MAX_EXACT, SHIFT, TOUCH_CAP, CountingDatabase, TooBig,
                             Unsupported, cells_in, and_parts, const_value, effect_nodes, getter, has_loop, as_numbers)
@@ -32,8 +32,8 @@ class Builder:
         self.start = layout.start_cells
         self.area = layout.width * layout.depth
         self.written = reach.written
-        self.failure_reads_cells = CELLS in reads(failure, self.an, {}, set()) or has_loop(failure)
-        self.goal_vars = {v for v in reads(goal, self.an, {}, set()) if isinstance(v, ir.StateVar)}
+        self.failure_reads_cells = CELLS in reads(failure, vars_of=self.an.vars_of)   # a loop over the grid too
+        self.goal_vars = {v for v in reads(goal, vars_of=self.an.vars_of) if isinstance(v, ir.StateVar)}
         self._classify(goal, keep)
         self._plan_actions()
         # Variables projected away: any of their reachable values (an over-approximation);
@@ -43,12 +43,12 @@ class Builder:
             raise Unsupported("cannot project away a variable the goal or a cell position reads")
         self.projected = tuple((sl.index, tuple(sorted(v - sl.lo for v in reach.values.get(sl.var, range(sl.lo, sl.hi + 1)))))
                                for sl in slots)
-        failure_vars = reads(failure, self.an, {}, set())
+        failure_vars = reads(failure, vars_of=self.an.vars_of)
         self.failure_projected = any(sl.var in failure_vars for sl in slots)
 
     def projectable(self) -> list:
         """Variables that may be projected away, the one with the most reachable values first."""
-        failure_vars = reads(self.failure, self.an, {}, set())
+        failure_vars = reads(self.failure, vars_of=self.an.vars_of)
         out = []
         for sl in self.L.slots:
             n = len(self.reach.values.get(sl.var, range(sl.lo, sl.hi + 1)))
@@ -166,7 +166,7 @@ class Builder:
             coord_vars: set = set()
             for c in cells:
                 for part in (c.x, c.y, c.z):
-                    r = reads(part, self.an, lets, set())
+                    r = reads(part, lets, self.an.vars_of)
                     if CELLS in r:
                         raise Unsupported(f"{a.name} reads a cell at a position read from a cell")
                     coord_vars |= r
@@ -177,12 +177,7 @@ class Builder:
         # its outcomes are memoized by their values (a move: by position and facing only).
         self.key_of, self.writes_of, self.deltas = {}, {}, {}
         for i in self.search:
-            a = self.actions[i]
-            lets = {loc.name: value for loc, value in a.lets}
-            r, w = set(), set()
-            for c in a.pre:
-                reads(c, self.an, lets, r)
-            effect_reads_writes(a.effects, self.an, lets, r, w)
+            r, w = action_access(self.actions[i], self.an.vars_of)
             kidx = sorted({self.L.by_var[v].index for v in r | w if v in self.L.by_var})
             self.key_of[i] = getter(kidx)
             self.writes_of[i] = sorted(self.L.by_var[v].index for v in w if v in self.L.by_var)

@@ -154,7 +154,7 @@ def goal_cells(model) -> GoalCells | None:
         write_costs.append(act.cost)
         stay = stay and not moves
         needs = []          # clauses: some literal (offset, op, value) of each holds
-        for p in _conjuncts(act.pre):
+        for p in ir.conjuncts(act.pre):
             alternatives = p.items if isinstance(p, ir.BoolOp) and p.op == "or" else (p,)
             clause = [_literal(q, lets, axes) for q in alternatives]
             if clause and None not in clause:
@@ -179,14 +179,6 @@ def goal_cells(model) -> GoalCells | None:
     out.need_offsets = {n[0] for lst in achievers.values() for a in lst for c in a.needs for n in c}
     model.memo["goal_cells"] = out
     return out
-
-
-def _conjuncts(items):
-    for p in items:
-        if isinstance(p, ir.BoolOp) and p.op == "and":
-            yield from _conjuncts(p.items)
-        else:
-            yield p
 
 
 def _literal(node, lets, axes):

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from ..compiler import ir
 from ..compiler.abstract import Abstract, maybe_true
 from ..compiler.reachability import Analysis
-from ..compiler.relevance import effect_reads_writes, reads
+from ..compiler.access import action_access, reads
 from ..model import Model
 from .backward import backward_distances
 from .position import manhattan
@@ -49,7 +49,7 @@ def choose_pattern(layout, actions, position_vars: list, an: Analysis) -> list:
         lets = {loc.name: value for loc, value in a.lets}
         for e in _top_sets(a.effects):
             if e.var in pattern:
-                extra |= {v for v in reads(e.value, an, lets, set()) if isinstance(v, ir.StateVar)}
+                extra |= {v for v in reads(e.value, lets, an.vars_of) if isinstance(v, ir.StateVar)}
     candidate = pattern + sorted(extra - set(pattern), key=lambda v: layout.by_var[v].index)
     if _size(layout, candidate) <= MAX_PATTERN_STATES:
         return sorted(candidate, key=lambda v: layout.by_var[v].index)
@@ -88,7 +88,7 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
     # for 4 facings, not for every (x, z, facing).
     read_at = {i: [k for k, v in enumerate(pattern) if v in _action_reads(actions[i], an)] for i in movers}
     outcomes: dict = {}
-    goal_reads = [k for k, v in enumerate(pattern) if v in reads(goal, an, {}, set())]   # likewise the goal
+    goal_reads = [k for k, v in enumerate(pattern) if v in reads(goal, vars_of=an.vars_of)]   # likewise the goal
     goal_at: dict = {}
 
     def flat(values) -> int:
@@ -143,12 +143,7 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
 
 
 def _action_reads(a, an) -> set:
-    lets = {loc.name: value for loc, value in a.lets}
-    r: set = set()
-    for c in a.pre:
-        reads(c, an, lets, r)
-    effect_reads_writes(a.effects, an, lets, r, set())
-    return r
+    return action_access(a, an.vars_of)[0]
 
 
 def _next_values(an, outcome, pattern, current) -> list:

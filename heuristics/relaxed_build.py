@@ -8,6 +8,7 @@ import itertools
 import time
 
 from ..compiler import ir
+from ..compiler.access import reads, state_vars
 from .relaxed_eval import BAD, Drop, Evaluator, Fail, TooBig, conjuncts, residual, residual_effects
 from .relaxed_task import RelaxedTooBig
 
@@ -50,7 +51,7 @@ def _groups(layout, actions) -> list:
             written = {e.var for e in sets}
             # Only a move-like block is merged: each new value is computed from an old value
             # of the block's own variables (x = x + dx, z = z + dz).
-            if len(sets) < 2 or not all(_reads_vars(e.value, lets) & written for e in sets):
+            if len(sets) < 2 or not all(state_vars(reads(e.value, lets)) & written for e in sets):
                 continue
             vs = [e.var for e in sets]
             for u, v in zip(vs, vs[1:]):
@@ -63,37 +64,20 @@ def _groups(layout, actions) -> list:
     return list(out.values())
 
 
-def _reads_vars(node, lets, acc=None) -> set:
-    acc = set() if acc is None else acc
-    if isinstance(node, ir.Var):
-        acc.add(node.var)
-    elif isinstance(node, ir.Local) and node.name in lets:
-        _reads_vars(lets[node.name], lets, acc)
-    for c in ir.children(node):
-        _reads_vars(c, lets, acc)
-    return acc
-
-
 def _context_vars(action) -> set:
     """State variables read where they choose a cell, or a keyed object written (through lets)."""
     lets = {loc.name: value for loc, value in action.lets}
     out: set = set()
 
-    def reads(node, acc):
-        if isinstance(node, ir.Var):
-            acc.add(node.var)
-        elif isinstance(node, ir.Local) and node.name in lets:
-            reads(lets[node.name], acc)
-        for c in ir.children(node):
-            reads(c, acc)
-        return acc
+    def read(node, acc):
+        acc |= state_vars(reads(node, lets))
 
     def walk(node):
         if isinstance(node, ir.Local) and node.name in lets:
             walk(lets[node.name])
         if isinstance(node, ir.Cell):
             for c in (node.x, node.y, node.z):
-                reads(c, out)
+                read(c, out)
         # A keyed object only read (inventoryBlock[selected]) needs no context: its key
         # becomes one more atom of the condition, shared by every context.
         for c in ir.children(node):
@@ -108,12 +92,12 @@ def _context_vars(action) -> set:
             elif isinstance(e, ir.SetVar):
                 walk(e.value)
             elif isinstance(e, ir.SetVarAt):
-                reads(e.key, out)
+                read(e.key, out)
                 walk(e.key)
                 walk(e.value)
             elif isinstance(e, ir.SetCell):
                 for c in (e.x, e.y, e.z):
-                    reads(c, out)
+                    read(c, out)
                     walk(c)
                 walk(e.value)
 

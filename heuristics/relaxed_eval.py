@@ -47,23 +47,7 @@ class Drop(Exception):
 
 def conjuncts(node) -> list:
     """Top-level conjuncts, with negations pushed through `or` (De Morgan)."""
-    if isinstance(node, ir.Const) and node.value is True:
-        return []
-    if isinstance(node, ir.BoolOp) and node.op == "and":
-        return [c for item in node.items for c in conjuncts(item)]
-    if isinstance(node, ir.Not) and isinstance(node.operand, ir.BoolOp) and node.operand.op == "or":
-        return [c for item in node.operand.items for c in conjuncts(_negate(item))]
-    if isinstance(node, ir.Not) and isinstance(node.operand, ir.Not):
-        return conjuncts(node.operand.operand)
-    return [node]
-
-
-def _negate(node):
-    if isinstance(node, ir.Not):
-        return node.operand
-    if isinstance(node, ir.Const):
-        return ir.Const(not node.value, "bool")
-    return ir.Not(node)
+    return ir.conjuncts(node, de_morgan=True)
 
 
 _CONSTS: dict = {}

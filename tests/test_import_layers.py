@@ -57,6 +57,7 @@ LAYER_OF = {
     "bcc.compiler.abstract": "analysis",
     "bcc.compiler.reachability": "analysis",
     "bcc.compiler.relevance": "analysis",
+    "bcc.compiler.access": "analysis",     # what an expression reads, what effects write: the one such analysis
     "bcc.compiler.inverses": "analysis",
     # front ends: YAML (compiler/) and PDDL (pddl_io/) text to a ground task
     "bcc.compiler.source": "front end",
