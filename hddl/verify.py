@@ -193,6 +193,7 @@ class _World:
 
 
 def _conjuncts(f) -> list:
+    # written apart from pddl_io.lifted.conjuncts on purpose: the verifier shares no code with the planner
     return [c for g in f[1] for c in _conjuncts(g)] if f[0] == "and" else [f]
 
 

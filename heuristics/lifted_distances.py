@@ -24,7 +24,8 @@ import itertools
 from collections import deque
 
 from ..pddl_io.lifted import TRUE
-from ..pddl_io.lifted_states import LiftedTask, conjuncts, free_vars, substitute
+from ..pddl_io.lifted import conjuncts
+from ..pddl_io.lifted_states import LiftedTask, free_vars, substitute
 
 SMALL_TYPE = 4          # a variable left free is taken over its type's objects if it has this many or fewer
 MAX_INSTANCES = 64      # achiever instances kept per landmark

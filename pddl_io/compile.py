@@ -13,6 +13,7 @@ import functools
 
 from .bits import BitEmitter, atom_shares
 from .ground import GroundTask
+from .lifted import conjuncts
 
 
 def formula_text(f, task: GroundTask) -> str:
@@ -24,14 +25,6 @@ def formula_text(f, task: GroundTask) -> str:
     if kind == "not":
         return f"(not {formula_text(f[1], task)})"
     return f"({kind} {' '.join(formula_text(s, task) for s in f[1])})"
-
-
-def _conjuncts(f) -> list:
-    if isinstance(f, tuple) and f[0] == "and":
-        return list(f[1])
-    if f == ("true",):
-        return []
-    return [f]
 
 
 SAMPLED_TREE_ACTIONS = 400   # tasks with this many actions get blind search's tree from a sample
@@ -143,7 +136,7 @@ def holds(f, s) -> bool:
 
 def action_functions(a) -> tuple:
     """(apply, why) of one ground action: PDDL semantics, conditions read the old state."""
-    conj = _conjuncts(a.pre)
+    conj = conjuncts(a.pre)
 
     def apply(s):
         if not all(holds(c, s) for c in conj):
@@ -175,7 +168,7 @@ def to_model(task: GroundTask, path: str, report: dict, files: tuple = ()):
         action_names=tuple(a.name for a in actions), action_costs=tuple(a.cost for a in actions),
         initial=initial, successors=ns["successors"], live_successors=ns["successors"],  # no failure states
         apply_fns=tuple(f[0] for f in fns), why_fns=tuple(f[1] for f in fns),
-        pre_texts=tuple(tuple(formula_text(c, task) for c in _conjuncts(a.pre)) for a in actions),
+        pre_texts=tuple(tuple(formula_text(c, task) for c in conjuncts(a.pre)) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"],
         variables=tuple(Variable(task.atom_text(i), i, 0, 1, "bool") for i in range(n)),
         grid=Grid(0, 0, 0, n, (), b"", (), 0), position=(None, None, None), position_static=(0, 0, 0),

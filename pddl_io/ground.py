@@ -26,7 +26,7 @@ from collections import defaultdict
 from dataclasses import dataclass, field
 
 from ..errors import BccError
-from .lifted import FALSE, TRUE, Domain, Problem, is_a
+from .lifted import FALSE, TRUE, Domain, Problem, conjuncts, is_a
 
 
 @dataclass
@@ -61,12 +61,6 @@ class _Rule:
         self.eqs, self.neqs = eqs, neqs
         self.negs = negs              # static atoms that must be false: ((pred, args), ...)
         self.action, self.effect = action, effect
-
-
-def _top_conjuncts(f) -> list:
-    if f[0] == "and":
-        return [g for sub in f[1] for g in _top_conjuncts(sub)]
-    return [f]
 
 
 def _is_var(t: str) -> bool:
@@ -113,11 +107,11 @@ class Grounder:
     def rules(self) -> list:
         out = []
         for ai, a in enumerate(self.dom.actions):
-            conds = _top_conjuncts(a.pre)
+            conds = conjuncts(a.pre)
             out.append(self._rule(a.params, conds, ai, None))
             for e in a.effects:
                 if e.add and (e.params or e.cond != TRUE):
-                    out.append(self._rule(a.params + e.params, conds + _top_conjuncts(e.cond), ai, e))
+                    out.append(self._rule(a.params + e.params, conds + conjuncts(e.cond), ai, e))
         return out
 
     # ---- exploration -------------------------------------------------------------

@@ -23,6 +23,14 @@ from ..errors import BccError
 from .read import SList, read_sexpr
 
 TRUE, FALSE = ("true",), ("false",)
+
+
+def conjuncts(f) -> list:
+    """The conjuncts of a formula (lifted, or ground: an atom is its number), nested `and`s
+    flattened, `true` dropped."""
+    if isinstance(f, tuple) and f[0] == "and":
+        return [g for sub in f[1] for g in conjuncts(sub)]
+    return [] if f == TRUE else [f]
 KNOWN_REQUIREMENTS = {
     ":strips", ":typing", ":negative-preconditions", ":disjunctive-preconditions", ":equality",
     ":existential-preconditions", ":universal-preconditions", ":quantified-preconditions",

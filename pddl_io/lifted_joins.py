@@ -16,7 +16,8 @@ the problem's, lowercased by the reader.
 """
 from __future__ import annotations
 
-from .lifted_states import LiftedTask, conjuncts, free_vars
+from .lifted import conjuncts
+from .lifted_states import LiftedTask, free_vars
 
 
 def _is_var(t: str) -> bool:

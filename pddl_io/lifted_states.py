@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 
-from .lifted import TRUE, Domain, Problem, is_a
+from .lifted import Domain, Problem, is_a
 
 
 def _is_var(t: str) -> bool:
@@ -61,12 +61,6 @@ def free_vars(f, acc: set | None = None) -> set:
         inner = free_vars(f[2], set())
         acc.update(inner - {v for v, _ in f[1]})
     return acc
-
-
-def conjuncts(f) -> list:
-    if f[0] == "and":
-        return [g for sub in f[1] for g in conjuncts(sub)]
-    return [] if f == TRUE else [f]
 
 
 def substitute(f, env: dict):

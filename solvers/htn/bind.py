@@ -12,7 +12,7 @@ Formulas are those of pddl_io/lifted.py; a term starting with "?" is a variable.
 """
 from __future__ import annotations
 
-from ...pddl_io.lifted import is_a
+from ...pddl_io.lifted import conjuncts, is_a
 
 
 def is_var(term: str) -> bool:
@@ -158,12 +158,6 @@ class Join:
         if out is not None:
             out.append(dict(env))
         return True
-
-
-def conjuncts(f) -> list:
-    if f[0] == "and":
-        return [c for g in f[1] for c in conjuncts(g)]
-    return [] if f[0] == "true" else [f]
 
 
 def _compile(parts: list, bound: set, free: dict, objects: Objects, predicates: dict, parents: dict) -> list:

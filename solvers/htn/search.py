@@ -24,7 +24,8 @@ import math
 from dataclasses import dataclass
 
 from ...pddl_io.lifted import TRUE, is_a
-from .bind import Join, Objects, conjuncts, holds, is_var
+from ...pddl_io.lifted import conjuncts
+from .bind import Join, Objects, holds, is_var
 from .estimate import method_cost, task_costs
 
 
