@@ -117,7 +117,7 @@ def print_result(result, name: str, where: str, as_json: bool, extra: dict | Non
 # values are text, checked by the chosen solver's declaration (solvers/options.py).
 # tests/test_solver_contract.py holds this list to the built-in solvers' declarations.
 SOLVER_FLAGS = ("heuristic", "weight", "preferred", "evaluation", "model", "episodes", "seed", "gamma", "alpha", "epsilon",
-                "delta", "known_after", "max_steps", "fd_search", "local_limit")
+                "delta", "known_after", "max_steps", "fd_search", "local_limit", "improve")
 
 
 def flag(name: str) -> str:

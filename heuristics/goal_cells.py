@@ -122,21 +122,21 @@ def _step(action, lets, axes) -> int | None:
     return total
 
 
-def goal_cells(model) -> GoalCells | None:
+def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
     """The analysis for a compiled dungeon, or None when the model has no IR (an imported
-    task) or its goal has no cell atom."""
+    task) or its goal has no cell atom (unless `allow_empty`)."""
     c = model.data("compiled")
     if c is None:
         return None
     memo = model.memo.get("goal_cells")
     if memo is not None:
-        return memo
+        return memo if memo.atoms or allow_empty else None
     items = c.goal.items if isinstance(c.goal, ir.BoolOp) and c.goal.op == "and" else (c.goal,)
     atoms, rest = [], []
     for g in items:
         cell = _const_cell_atom(g)
         (atoms if cell else rest).append(cell or g)
-    if not atoms:
+    if not atoms and not allow_empty:
         return None
     axes = {v: i for i, v in enumerate(c.position_vars)} if len(c.position_vars) == 3 else {}
     achievers, max_writes, write_costs, move_costs, steps, stay = {}, 0, [], [], [], True
@@ -303,3 +303,36 @@ def support_levels(cells: GoalCells, read, state) -> dict:
         near = {(p[0] + o[0], p[1] + o[1], p[2] + o[2]) for p in frontier for o in offsets}
         frontier = [q for q in near & todo if ready(cells, overlay, state, (q, where[q]))]
     return level
+
+
+def footing(model) -> tuple:
+    """(solid, free): offsets from the agent's cell that must hold something wherever the
+    agent arrives (what it stands on, e.g. {(0, -1, 0)}) and that must be free (its body,
+    e.g. {(0, 0, 0), (0, 1, 0)}): the cell conditions every moving action that writes no
+    cell puts on its destination. Empty sets when not known."""
+    c = model.data("compiled")
+    if c is None or len(c.position_vars) != 3:
+        return set(), set()
+    axes = {v: i for i, v in enumerate(c.position_vars)}
+    default, common, body = model.grid.default, None, None
+    for index in c.search:
+        act = c.actions[index]
+        if _count_writes(act.effects) or not _moves(act.effects, axes):
+            continue
+        lets = {loc.name: expr for loc, expr in act.lets}
+        dest = [0, 0, 0]
+        for e in act.effects:
+            if isinstance(e, ir.SetVar) and e.var in axes:
+                lin = _linear(e.value, lets, axes)
+                if lin is None or tuple(lin[:3]) != tuple(int(i == axes[e.var]) for i in range(3)):
+                    return set(), set()
+                dest[axes[e.var]] = lin[3]
+        solid, free = set(), set()
+        for p in _conjuncts(act.pre):
+            lit = _literal(p, lets, axes)
+            if lit is not None and lit[2] == default:
+                rel = (lit[0][0] - dest[0], lit[0][1] - dest[1], lit[0][2] - dest[2])
+                (solid if lit[1] == "!=" else free).add(rel)
+        common = solid if common is None else common & solid
+        body = free if body is None else body & free
+    return common or set(), body or set()

@@ -57,6 +57,8 @@ class SolveRequest(DungeonRequest):
     known_after: int | None = Field(None, description="rmax: visits before a (state, action) is known [default: 1].")
     max_steps: int | None = Field(None, description="Learning solvers: steps before an episode is cut.")
     local_limit: int | None = Field(None, description="build: expansions of one goal atom's search [default: 4000].")
+    improve: int | None = Field(None, description="build: plans of at most this many actions are handed to A* "
+                                "for a shorter one; 0: never [default: 40].")
 
 
 MAX_ACTIONS = 20_000  # a frame is ~1 KB of JSON: bounds one answer to tens of MB

@@ -46,13 +46,28 @@ STRUCTURE_ATOMS = 10   # cell atoms from which a goal counts as a structure
 
 def default_solver(model) -> str:
     """`bcc solve`'s choice when no --solver is given: `build` for a structure goal (a
-    blueprint, or a conjunction of at least STRUCTURE_ATOMS cell atoms), else `astar`.
-    The one place this rule lives (docs/structures.md states it)."""
-    from ..heuristics.goal_cells import goal_cells
+    blueprint, or a conjunction of at least STRUCTURE_ATOMS cell atoms), for a goal with
+    at least two cell atoms to write, and for a goal that needs something gathered first
+    (a cell atom or an amount the goal asks for takes a supply the agent lacks at the
+    start, heuristics/supplies.py); else `astar`. The one place this rule lives
+    (docs/structures.md states it)."""
+    from ..heuristics.goal_cells import CellReader, goal_cells
+    from ..heuristics.supplies import supplies, wanted
     if model.report.get("structure"):
         return "build"
     cells = goal_cells(model)
-    return "build" if cells is not None and len(cells.atoms) >= STRUCTURE_ATOMS else "astar"
+    if cells is not None and len(cells.atoms) >= STRUCTURE_ATOMS:
+        return "build"
+    amounts = wanted(model)
+    if cells is None and amounts:
+        cells = goal_cells(model, allow_empty=True)
+    if cells is None:
+        return "astar"
+    read = CellReader(model)
+    todo = [v for p, v in cells.atoms if read(model.initial, *p) != v]
+    sup = supplies(model, cells)
+    short = sup.short(model.initial, todo, amounts) if sup else {}
+    return "build" if len(todo) >= 2 or short else "astar"
 
 
 def _plugins() -> dict:

@@ -18,14 +18,23 @@ import dataclasses
 import heapq
 import itertools
 
-from ..heuristics.goal_cells import CellReader, goal_cells, lower_bound, orders, ready, support_levels
+from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound, orders, ready, support_levels
+from ..heuristics.supplies import supplies, wanted
+from .scaffold import CANDIDATES, make_solid, stand_near, write_cell
 from ..errors import ModelError
 from .base import Budget, Meter, Result, budget_result
 from .options import Option, declare
 
 NAME = "build"
 LIFTS = 2          # actions that write and move tried at the end of a walk (a climb, twice)
+GATHER_LIMIT = 100_000   # states a walk to a supply may visit (positions, in effect)
+IMPROVE_UP_TO = 40       # plans this short are handed to A* for a shorter one
+IMPROVE_STATES = 200_000
 RETRY = 8          # atoms achieved before a set-aside atom is tried again
+
+
+class _Spent(Exception):
+    """The budget ran out inside a walk (its name in args[0])."""
 
 
 def _distance(a, b) -> int:
@@ -61,23 +70,35 @@ class _Builder:
         # walks may also clear a cell on the way (take a scaffold down), never fill one
         clear = model.grid.default
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
+        self.supplies = supplies(model, cells)
+        self.wanted = wanted(model)    # variables the goal wants at or above a value
+        self.keep = set()              # footing built for the atom in hand (solvers/scaffold.py)
+        self.footing = footing(model)  # (offsets the agent stands on, offsets its body takes)
+        self.exhausted = {}            # variable -> plan length when no way to raise it was found
+        self.rests_on = {}             # value -> offsets every achiever of it needs to hold something
+        for v, lst in cells.achievers.items():
+            units = [{c[0][0] for c in a.needs if len(c) == 1 and c[0][1] == "!=" and c[0][2] == model.grid.default
+                      and c[0][0] != (0, 0, 0)} for a in lst if not a.moves] or [set()]
+            self.rests_on[v] = set.intersection(*units)
+        spare = [r for v, r in self.rests_on.items() if v is not None and v != model.grid.default and cells.achievers[v]]
+        self.rests_on_any = set.intersection(*spare) if spare else set()   # what any written block rests on
         self.by_place = {}             # standing place -> [(atom position, achiever action)]
         for pos, v in cells.atoms:
             for a in cells.achievers.get(v, ()):
                 place = (pos[0] - a.write[0], pos[1] - a.write[1], pos[2] - a.write[2])
                 self.by_place.setdefault(place, []).append((pos, a.action))
 
-    def walk(self, state, todo, eligible, limit):
-        """Breadth-first over the actions that write no cell, to the nearest place where one
-        achiever writes an eligible atom: the path [(action, state)] ending with that write,
-        or None."""
-        apply, agent, read, default = self.model.apply_fns, self.model.agent_position, self.read, self.model.grid.default
+    def walk(self, state, finish, limit):
+        """Breadth-first over the actions that write no cell, to the nearest state where
+        `finish(s)` gives the last steps [(action, state)] (reversed; e.g. an achiever that
+        writes an eligible atom): the whole path [(action, state)], or None."""
+        apply = self.model.apply_fns
         parents = {state: None}
         frontier = [state]
         while frontier and len(parents) <= limit:
             nxt = []
             for s in frontier:
-                tail = self._finish(s, todo, eligible, LIFTS)
+                tail = finish(s)
                 if tail is not None:
                     path = tail
                     while parents[s] is not None:
@@ -87,6 +108,10 @@ class _Builder:
                     path.reverse()
                     return path
                 self.expanded += 1
+                if not self.expanded & self.meter.mask:
+                    which = self.meter.check(self.expanded, self.generated, len(parents))
+                    if which:
+                        raise _Spent(which)
                 for a in self.walkers:
                     try:
                         n = apply[a](s)
@@ -147,10 +172,15 @@ class _Builder:
         (pos, value), read = atom, self.read
         default, protected = self.model.grid.default, self.protected
         places = [p for p in self.cells.standing(atom) if protected.get(p, default) == default]
+        return self.search(state, lambda s: read(s, *pos) == value, places)
+
+    def search(self, state, done, places):
+        """Greedy from `state` to one where `done(s)`, h = 1 + the distance to the nearest
+        of `places`, changing no protected atom: (path, "ok" | "failed" | budget name)."""
         agent = self.model.agent_position
 
         def h(s):
-            if read(s, *pos) == value:
+            if done(s):
                 return 0
             here = agent(s)
             return 1 + min((_distance(here, p) for p in places), default=0)
@@ -185,6 +215,100 @@ class _Builder:
                 heapq.heappush(frontier, (h(n), g + 1, next(tie), n))
         return None, "failed"
 
+    def _blocked(self, state, var) -> bool:
+        """Too little of `var` is left to write even one atom that takes it."""
+        need = min((k for lst in self.supplies.uses.values() for v, k in lst if v == var), default=0)
+        return self.supplies.value(state, var) < need
+
+    def _reserved(self, todo) -> set:
+        """Cells that every achiever of a pending atom needs to hold something (what it rests
+        on): a supply must not be taken from them."""
+        out = set()
+        for (x, y, z), v in todo.items():
+            for dx, dy, dz in self.rests_on.get(v, ()):
+                out.add((x + dx, y + dy, z + dz))
+        return out
+
+    def gather(self, state, short, todo):
+        """The nearest way to raise one of the `short` variables: a walk ending with a
+        supplier (or a walk that picks something up), else a greedy search toward the cells
+        that hold a value taking it. (path, "ok" | "failed" | budget name)."""
+        sup, apply = self.supplies, self.model.apply_fns
+        before = {v: sup.value(state, v) for v in short}
+        reserved = self._reserved(todo) | self.keep
+        suppliers = sorted({a for v in short for a in sup.suppliers.get(v, ())})
+
+        def gained(n):
+            return any(sup.value(n, v) > k for v, k in before.items())
+
+        def touches_reserved(s, a):
+            offs = self.writes.get(a, ())
+            if not offs:
+                return False
+            x, y, z = self.model.agent_position(s)
+            return any((x + dx, y + dy, z + dz) in reserved for dx, dy, dz in offs)
+
+        def finish(s):
+            if s is not state and gained(s):
+                return []
+            for a in suppliers:
+                try:
+                    n = apply[a](s)
+                except ModelError:
+                    continue
+                if n is not None and gained(n) and not self.model.is_failure(n) \
+                        and not self.breaks_protected(s, a, n) and not touches_reserved(s, a):
+                    return [(a, n)]
+            return None
+        path = self.walk(state, finish, GATHER_LIMIT)
+        if path:
+            return path, "ok"
+        # no walk reaches a supplier: search toward the cells holding a value that takes one
+        values = {v for v, lst in sup.uses.items() for var, _ in lst if var in short}
+        grid = self.model.grid.array(state)
+        import numpy
+        cells = [(int(x), int(y), int(z)) for v in values for y, z, x in numpy.argwhere(grid == v)]
+        cells = [c for c in cells if c not in reserved and c not in self.protected]
+        offsets = {o for a in suppliers for o in (self.writes.get(a) or ())}
+        places = [(x - o[0], y - o[1], z - o[2]) for x, y, z in cells for o in offsets]
+        if not places:
+            return None, "failed"
+        pre = stand_near(self, state, places, todo)
+        if pre:
+            walk = self.walk(pre[-1][1], finish, GATHER_LIMIT)
+            if walk is not None:
+                return pre + walk, "ok"
+        return self.search(state, lambda s: gained(s), places)
+
+    def prepare(self, state, pos, todo):
+        """Footing first, then the atom at `pos`: what it rests on (cells outside the goal,
+        made solid with a spare value), a standing place's footing when no walk reaches
+        one, then the walk that writes it. The path [(action, state)], or None."""
+        value, path = todo[pos], []
+        self.keep.clear()
+        for rel in self.rests_on.get(value, ()):
+            cell = (pos[0] + rel[0], pos[1] + rel[1], pos[2] + rel[2])
+            if cell in todo:
+                continue
+            sub = make_solid(self, state, cell, todo)
+            if sub is None:
+                return None
+            path += sub
+            state = path[-1][1] if path else state
+
+        def finish(s):
+            return write_cell(self, s, pos, value)
+        walk = self.walk(state, finish, self.local_limit)
+        if walk is None:
+            pre = stand_near(self, state, self.cells.standing((pos, value)), todo)
+            if not pre:
+                return None
+            walk = self.walk(pre[-1][1], finish, self.local_limit)
+            if walk is None:
+                return None
+            walk = pre + walk
+        return path + walk
+
     @staticmethod
     def _forgive(set_aside):
         for p in list(set_aside):
@@ -202,6 +326,14 @@ class _Builder:
     def run(self, start):
         """Serialise the cell atoms from `start`: (the plan's actions, the state reached,
         None or a budget name)."""
+        reached = []
+        try:
+            return self._run(start, reached)
+        except _Spent as spent:
+            plan, state = reached or ([], start)
+            return plan, state, spent.args[0]
+
+    def _run(self, start, reached):
         cells, read = self.cells, self.read
         waits = orders(cells)                 # q -> atoms that must come before q
         blockers = {q: len(ps) for q, ps in waits.items()}
@@ -219,9 +351,11 @@ class _Builder:
             for q in released.get(pos, ()):
                 blockers[q] -= 1
         plan, state, set_aside = [], start, {}    # set aside: position -> achievements left to wait
+        reached[:] = [plan, state]
         level = support_levels(cells, read, start)
         late = len(level) + 1      # atoms never made ready by the others come last
-        while todo:
+        wanted = self.wanted
+        while todo or (wanted and self.supplies.short(state, (), wanted)):
             which = self.meter.check(self.expanded, self.generated, self.expanded)
             if which:
                 return plan, state, which
@@ -230,7 +364,22 @@ class _Builder:
             def eligible(p):
                 return level.get(p, late) <= lowest and p not in set_aside and blockers.get(p, 0) <= 0 \
                     and ready(cells, read, state, (p, todo[p]))
-            path = self.walk(state, todo, eligible, self.local_limit)
+            short = self.supplies.short(state, todo.values(), wanted) if self.supplies else {}
+            short = {v: k for v, k in short.items()
+                     if self.exhausted.get(v) is None or (self.exhausted[v] != len(plan) and self._blocked(state, v))}
+            if short:   # gather what writing the pending atoms takes, nearest first
+                path, why = self.gather(state, short, todo)
+                if why not in ("ok", "failed"):
+                    return plan, state, why
+                if path:
+                    plan.extend(a for a, _ in path)
+                    state = path[-1][1]
+                    self._achieved(state, todo, released, blockers)
+                    continue
+                self.exhausted.update((v, len(plan)) for v in short)
+                if not todo:
+                    return plan, state, None
+            path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit)
             if path is not None:
                 plan.extend(a for a, _ in path)
                 state = path[-1][1]
@@ -241,9 +390,16 @@ class _Builder:
             candidates = sorted(
                 (min((_distance(here, p) for p in cells.standing((pos, v))), default=0), pos)
                 for pos, v in todo.items() if eligible(pos))
+            if not candidates and lowest >= late:   # nothing ready: what they rest on is built first
+                candidates = sorted(
+                    (min((_distance(here, p) for p in cells.standing((pos, v))), default=0), pos)
+                    for pos, v in todo.items() if pos not in set_aside and blockers.get(pos, 0) <= 0)
             progressed = False
-            for _, pos in candidates:
-                path, why = self.reach(state, (pos, todo[pos]))
+            for k, (_, pos) in enumerate(candidates):
+                path = self.prepare(state, pos, todo) if k < CANDIDATES and self.footing[0] else None
+                why = "ok"
+                if path is None:
+                    path, why = self.reach(state, (pos, todo[pos]))
                 if why not in ("ok", "failed"):
                     return plan, state, why
                 if path is None:
@@ -262,13 +418,16 @@ class _Builder:
         return plan, state, None
 
 
-@declare(Option("local_limit", int, 4000, "expansions of one atom's greedy search before it is set aside", low=1))
-def solve(model, budget: Budget, progress=None, local_limit: int = 4000, **options) -> Result:
+@declare(Option("local_limit", int, 4000, "expansions of one atom's greedy search before it is set aside", low=1),
+         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to A* (half the time "
+                "left, at most 200,000 states) for a shorter one; 0: never", low=0))
+def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve: int = IMPROVE_UP_TO,
+          **options) -> Result:
     """Builds a goal of many cell atoms one atom at a time (satisficing), reporting a lower bound."""
     from . import get_solver
     meter = Meter(budget, progress)
-    cells = goal_cells(model)
-    if cells is None:   # no cell atoms: nothing to serialise
+    cells = goal_cells(model) or (goal_cells(model, allow_empty=True) if wanted(model) else None)
+    if cells is None:   # no cell atoms and no amount to gather: nothing to serialise
         result = get_solver("gbfs")(model, budget, progress)
         result.solver = NAME
         return result
@@ -290,6 +449,14 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, **optio
             return meter.finish(rest)
         tail = [model.action_index(n) for n in rest.plan]
     actions = [*plan, *tail]
+    if 0 < len(actions) <= improve:   # short: an optimal search may finish and find a shorter plan
+        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed()) / 2
+        mem = budget.max_memory_mb if budget.max_memory_mb is None else budget.max_memory_mb / 2
+        better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem))
+        for k in stats:
+            stats[k] += getattr(better, k) or 0
+        if better.solved and better.cost < sum(model.action_costs[a] for a in actions):
+            actions = [model.action_index(n) for n in better.plan]
     return meter.finish(Result(solver=NAME, solved=True, status="solved",
                                plan=[model.action_names[a] for a in actions],
                                cost=sum(model.action_costs[a] for a in actions),

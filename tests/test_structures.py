@@ -121,3 +121,51 @@ def test_bad_blueprints_are_one_line_at_their_place(tmp_path, layers, message):
 def test_bad_generate_arguments_exit_2():
     r = bcc("generate", "house", "--width", 99)
     assert r.returncode == 2 and "--width 99" in r.stderr
+
+
+def test_supplies_and_footing_are_read_from_the_actions():
+    # builder: every place(D, logs) takes one from logs.count; an arriving agent stands on
+    # the cell below and its body takes that cell and the one above (move/jump/drop alike)
+    from bcc.heuristics.goal_cells import footing
+    from bcc.heuristics.supplies import supplies, wanted
+    model = compile_dungeon(str(HERE / "gather.yaml"))
+    cells = goal_cells(model)
+    log = model.grid.value_names.index("log")
+    sup = supplies(model, cells)
+    (var, amount), = sup.uses[log]
+    assert var.label == "logs.count" and amount == 1
+    assert sup.short(model.initial, [log, log]) == {var: 2}
+    assert footing(model) == ({(0, -1, 0)}, {(0, 0, 0), (0, 1, 0)})
+    counted = compile_dungeon(str(HERE / "gather.yaml"), goal="2 <= logs.count and logs.count <= 63")
+    assert {v.label: k for v, k in wanted(counted).items()} == {"logs.count": 2}
+
+
+def test_build_gathers_then_builds_on_footing():
+    # no log is carried: both are broken first; the upper one is written standing one level
+    # up, on a stone the solver puts down (its footing). improve=0: the builder's own plan.
+    model = compile_dungeon(str(HERE / "gather.yaml"))
+    assert default_solver(model) == "build"
+    result = get_solver("build")(model, Budget(time_limit=120), improve=0)
+    assert result.solved and replays(model, result.plan)
+    assert 0 < result.lower_bound <= result.cost
+    assert any(a.startswith("break_") for a in result.plan) and "place_south(agent, stones)" in result.plan
+
+
+def test_build_gathers_an_amount_the_goal_asks_for():
+    # 2 <= logs.count: walk 3 east to (4, 1, 1), break (5, 1, 1), step into it, break
+    # (6, 1, 1): 6 actions, and no plan is shorter (each break needs the agent beside the
+    # log at feet level, and x = 4 is 3 moves away).
+    model = compile_dungeon(str(HERE / "gather.yaml"), goal="2 <= logs.count")
+    assert default_solver(model) == "build"
+    result = get_solver("build")(model, Budget(time_limit=120), improve=0)
+    assert result.solved and replays(model, result.plan) and result.cost == 6
+
+
+@pytest.mark.slow
+def test_build_on_gather_is_optimal_after_improving():
+    # BFS (independent, unit costs) gives the optimum; build's short plan goes to A*
+    model = compile_dungeon(str(HERE / "gather.yaml"))
+    optimum = get_solver("bfs")(model, Budget(time_limit=300))
+    result = get_solver("build")(model, Budget(time_limit=300))
+    assert optimum.solved and result.solved and replays(model, result.plan)
+    assert result.lower_bound <= optimum.cost == result.cost
