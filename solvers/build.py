@@ -92,9 +92,10 @@ class _Builder:
         """Breadth-first over the actions that write no cell, to the nearest state where
         `finish(s)` gives the last steps [(action, state)] (reversed; e.g. an achiever that
         writes an eligible atom): the whole path [(action, state)], or None."""
-        apply = self.model.apply_fns
+        apply, agent, base = self.model.apply_fns, self.model.agent_position, self.read.base
         parents = {state: None}
-        frontier = [state]
+        seen = {(agent(state), state[base:])}   # a place and the cells: what else a walk changes
+        frontier = [state]                      # (things picked up) does not make a new place
         while frontier and len(parents) <= limit:
             nxt = []
             for s in frontier:
@@ -120,6 +121,10 @@ class _Builder:
                     self.generated += 1
                     if n is None or n in parents or self.model.is_failure(n) or self.breaks_protected(s, a, n):
                         continue
+                    key = (agent(n), n[base:])
+                    if key in seen:
+                        continue
+                    seen.add(key)
                     parents[n] = (s, a)
                     nxt.append(n)
             frontier = nxt

@@ -75,14 +75,6 @@ def write_cell(b, s, cell, value):
     return None
 
 
-def write_spare(b, s, cell, todo, value=None):
-    """From `s`, write `value` (or a spare value) at `cell`: [(action, state)], or None."""
-    if value is not None:
-        return write_cell(b, s, cell, value)
-    spare = spare_value(b, s, todo)
-    return None if spare is None else write_cell(b, s, cell, spare)
-
-
 def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
     """A path [(action, state)] after which `cell` holds something (a pending atom's own
     value when it is one, else a spare value, gathered if none is carried), what it rests
@@ -108,9 +100,11 @@ def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
         [a for v, lst in b.cells.achievers.items() if v is not None and v != default for a in lst]
     places = {_add(cell, (-a.write[0], -a.write[1], -a.write[2])) for a in writers if not a.moves}
 
+    chosen = [value if value is not None else spare_value(b, state, todo)]
+
     def write(s):
-        return write_spare(b, s, cell, todo, value)
-    walk = b.walk(state, write, b.local_limit)
+        return None if chosen[0] is None else write_cell(b, s, cell, chosen[0])
+    walk = b.walk(state, write, b.local_limit) if chosen[0] is not None else None
     if walk is None:
         walk = b.walk(state, lambda s: [] if agent(s) in places else None, b.local_limit)
         if walk is None and depth > 0:
@@ -122,13 +116,15 @@ def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
             return None
         path += walk
         state = path[-1][1] if path else state
-        walk = b.walk(state, write, b.local_limit)
+        chosen[0] = value if value is not None else spare_value(b, state, todo)
+        walk = b.walk(state, write, b.local_limit) if chosen[0] is not None else None
         if walk is None and value is None:   # nothing to spare: gather one, then come back
             more = gather_spare(b, state, todo)
             if not more:
                 return None
             path += more
-            walk = b.walk(more[-1][1], write, b.local_limit)
+            chosen[0] = spare_value(b, more[-1][1], todo)
+            walk = b.walk(more[-1][1], write, b.local_limit) if chosen[0] is not None else None
     if walk is None:
         return None
     b.keep.add(cell)    # footing in use: no supply is taken from it until the atom is written
