@@ -328,7 +328,7 @@ def footing(model) -> tuple:
                     return set(), set()
                 dest[axes[e.var]] = lin[3]
         solid, free = set(), set()
-        for p in _conjuncts(act.pre):
+        for p in ir.conjuncts(act.pre):
             lit = _literal(p, lets, axes)
             if lit is not None and lit[2] == default:
                 rel = (lit[0][0] - dest[0], lit[0][1] - dest[1], lit[0][2] - dest[2])
