@@ -10,7 +10,7 @@ import time
 from ..compiler import ir
 from ..compiler.access import reads, state_vars
 from .relaxed_eval import BAD, Drop, Evaluator, Fail, TooBig, conjuncts, residual, residual_effects
-from .relaxed_task import RelaxedTooBig
+from .relaxed_task import Reachability, RelaxedTooBig
 
 MAX_GROUP = 4096        # largest product of value ranges a group of variables may have
 MAX_CONTEXTS = 200_000  # contexts (over all actions) before the view gives up
@@ -289,7 +289,7 @@ class Builder:
         facts become reachable from the operators built so far, so a wall cell's position,
         say, is never a context. Other contexts could never fire; dropping them leaves
         what `_prune` keeps unchanged."""
-        live = self.live = _Reach(init_facts)
+        live = self.live = Reachability(init_facts)
         todo = []
         for index in self.search:
             a = self.actions[index]
@@ -479,42 +479,6 @@ class Builder:
         for minterms in parts:
             out.extend(self.condition(minterms))
         return tuple(sorted(set(out)))
-
-
-class _Reach:
-    """Relaxed reachability from the start, kept up to date as operators are added."""
-
-    def __init__(self, init):
-        self.reached = set()
-        self.waiting: dict = {}     # fact -> operators still missing it: [count missing, adds]
-        self.fresh: list = []
-        self._fire(tuple(init))
-
-    def add(self, pre, add) -> None:
-        missing = [p for p in pre if p not in self.reached]
-        if not missing:
-            self._fire(add)
-            return
-        entry = [len(missing), add]
-        for p in missing:
-            self.waiting.setdefault(p, []).append(entry)
-
-    def _fire(self, add) -> None:
-        stack = [add]
-        while stack:
-            for f in stack.pop():
-                if f not in self.reached:
-                    self.reached.add(f)
-                    self.fresh.append(f)
-                    for entry in self.waiting.pop(f, ()):
-                        entry[0] -= 1
-                        if entry[0] == 0:
-                            stack.append(entry[1])
-
-    def take(self) -> list:
-        """The facts reached since the last call."""
-        out, self.fresh = self.fresh, []
-        return out
 
 
 def _component(effects, atom, ev) -> tuple:

@@ -7,6 +7,50 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 
+class Reachability:
+    """Relaxed reachability over facts from a start: the facts and the operators that a
+    relaxed plan can reach, kept up to date as operators are added (the view builds its
+    operators lazily, as their context facts become reachable, and prunes the ones that
+    can never fire with the same fixpoint). An operator fires once every fact of its
+    precondition is reached; its adds are then reached."""
+
+    def __init__(self, init):
+        self.reached: set = set()
+        self.fired: set = set()      # the names given to `add` of the operators that fired
+        self.waiting: dict = {}      # fact -> operators still missing it: [count missing, adds, name]
+        self.fresh: list = []
+        self._fire(None, tuple(init))
+
+    def add(self, pre, add, name=None) -> None:
+        missing = [p for p in pre if p not in self.reached]
+        if not missing:
+            self._fire(name, add)
+            return
+        entry = [len(missing), add, name]
+        for p in missing:
+            self.waiting.setdefault(p, []).append(entry)
+
+    def _fire(self, name, add) -> None:
+        stack = [(name, add)]
+        while stack:
+            name, add = stack.pop()
+            if name is not None:
+                self.fired.add(name)
+            for f in add:
+                if f not in self.reached:
+                    self.reached.add(f)
+                    self.fresh.append(f)
+                    for entry in self.waiting.pop(f, ()):
+                        entry[0] -= 1
+                        if entry[0] == 0:
+                            stack.append((entry[2], entry[1]))
+
+    def take(self) -> list:
+        """The facts reached since the last call."""
+        out, self.fresh = self.fresh, []
+        return out
+
+
 class RelaxedTooBig(Exception):
     """The relaxed view would exceed its limits (contexts, time); heuristics fall back."""
 

@@ -22,7 +22,7 @@ import time
 
 from .relaxed_build import Builder
 from .relaxed_last import last_step_operators
-from .relaxed_task import RelaxedTask, RelaxedTooBig, StateReader  # noqa: F401 - RelaxedTooBig: raised by build (Builder)
+from .relaxed_task import Reachability, RelaxedTask, RelaxedTooBig, StateReader  # noqa: F401 - RelaxedTooBig: raised by build (Builder)
 
 
 def build(layout, actions, search, goal, reach, n_values, initial, time_limit: float | None = None) -> RelaxedTask:
@@ -58,36 +58,10 @@ def build(layout, actions, search, goal, reach, n_values, initial, time_limit: f
 def _prune(ops, init_facts, goal, n_facts) -> list:
     """Keep operators that can fire from the start (relaxed reachability: a fact of any
     reachable state is reachable in the relaxation) and add a fact the goal may need."""
-    reached = bytearray(n_facts)
-    for f in init_facts:
-        reached[f] = 1
-    waiting: dict = {}
-    missing = []
-    queue = []
+    reach = Reachability(init_facts)
     for i, (pre, add, _, _) in enumerate(ops):
-        missing.append(len(pre))
-        for p in pre:
-            waiting.setdefault(p, []).append(i)
-        if not pre:
-            queue.append(i)
-    for f in init_facts:
-        for i in waiting.get(f, ()):
-            missing[i] -= 1
-            if missing[i] == 0:
-                queue.append(i)
-    fireable = set()
-    while queue:
-        i = queue.pop()
-        if i in fireable:
-            continue
-        fireable.add(i)
-        for f in ops[i][1]:
-            if not reached[f]:
-                reached[f] = 1
-                for j in waiting.get(f, ()):
-                    missing[j] -= 1
-                    if missing[j] == 0:
-                        queue.append(j)
+        reach.add(pre, add, i)
+    fireable = reach.fired
     if goal is None:
         return []
     needed = bytearray(n_facts)
