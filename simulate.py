@@ -58,6 +58,8 @@ def replay(model: Model, plan: list[tuple[str, int, int]], path: str = "<plan>")
         indices.append(model.action_index(name))
     state = model.initial
     states, cost = [state], 0
+    # a task is done when its plan is: the goal is checked after the last step, not the first it holds at
+    to_the_end = bool(model.report.get("task"))
     if model.is_goal(state) and not indices:
         return Replay(True, 0, 0, True, "the goal holds in the initial state", states=states)
     for step, a in enumerate(indices, 1):
@@ -70,7 +72,7 @@ def replay(model: Model, plan: list[tuple[str, int, int]], path: str = "<plan>")
         state = nxt
         cost += model.action_costs[a]
         states.append(state)
-        if model.is_goal(state):
+        if model.is_goal(state) and not to_the_end:
             extra = len(indices) - step
             note = f"; the {extra} step(s) after it were not run" if extra else ""
             return Replay(True, step, cost, True, f"the goal holds after step {step}{note}", states=states)
@@ -78,6 +80,9 @@ def replay(model: Model, plan: list[tuple[str, int, int]], path: str = "<plan>")
             return Replay(False, step, cost, False,
                           f"step {step} ({model.action_names[a]}) ends the episode in failure", failed_step=step,
                           states=states)
+    if to_the_end and model.is_goal(state):
+        return Replay(True, len(indices), cost, True, f"all {len(indices)} step(s) apply and the goal holds after "
+                                                      f"the last", states=states)
     return Replay(False, len(indices), cost, False,
                   f"the plan ends after {len(indices)} step(s) but the goal `{model.goal_text}` does not hold",
                   states=states)

@@ -24,8 +24,8 @@ for _blas_threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREAD
 from ..errors import BccError, ModelError
 
 from .shared import (budget_options, clear_progress, compile_model, emit_json, goal_option, json_option, max_memory_option,
-                         print_result, progress_enabled, solver_flags, solver_given, time_limit_option, within_budget,
-                         write_output)
+                         print_result, progress_enabled, solver_flags, solver_given, task_option, time_limit_option,
+                         within_budget, write_output)
 from ..exit_codes import EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_NO_SOLUTION, EXIT_OK
 
 
@@ -89,11 +89,12 @@ def main():
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Also write the compiled model as JSON (format bcc-model/2, the report included) to FILE, atomically.")
 @click.option("--emit-python", type=click.Path(dir_okay=False, writable=True), help="Write the generated successor code to FILE.")
 @goal_option
+@task_option
 @budget_options
-def compile_cmd(dungeon, as_json, output, emit_python, goal, time_limit, max_memory):
+def compile_cmd(dungeon, as_json, output, emit_python, goal, task, time_limit, max_memory):
     """Parse, type-check and compile DUNGEON (a file or a shipped name); report the model."""
     with within_budget(time_limit, max_memory, as_json, dungeon):
-        model = compile_model(dungeon, goal)
+        model = compile_model(dungeon, goal, task)
         report = model.compile_report()
     if output:
         from ..model_json import model_json
@@ -123,12 +124,15 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal, time_limit, max_mem
                f"typical {b['typical']}, largest {b['largest']} over the first {b['sampled']:,} states; "
                f"worst {b['worst']:,} (every mutable cell changed)")
     click.echo(f"goal: {r['goal']}")
+    if r.get("tasks") is not None:
+        click.echo(f"tasks: {len(r['tasks'])}, methods: {len(r['methods'])}; task: "
+                   f"{'; '.join(r['task']) if r.get('task') else 'none'}")
 
 
 @main.command("solve")
 @click.argument("dungeon")
-@click.option("--solver", default=None, help="Solver name (see `bcc solvers`) [default: build for a structure "
-              "goal, else astar].")
+@click.option("--solver", default=None, help="Solver name (see `bcc solvers`) [default: htn for a task, build for "
+              "a structure goal, else astar].")
 @json_option
 @click.option("--max-states", type=click.IntRange(min=1), help="Stop after storing this many states.")
 @time_limit_option()
@@ -136,7 +140,8 @@ def compile_cmd(dungeon, as_json, output, emit_python, goal, time_limit, max_mem
 @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write the plan to FILE, one action a line (atomically).")
 @solver_flags
 @goal_option
-def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, output, goal, **solver_options):
+@task_option
+def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, output, goal, task, **solver_options):
     """Solve DUNGEON: the plan on stdout (one action a line), the summary on stderr.
     Exit 0 solved, 1 no plan or a budget ran out. Options that a solver does not take
     are refused; `bcc solvers` lists each solver's."""
@@ -145,7 +150,7 @@ def solve_cmd(dungeon, solver, as_json, max_states, time_limit, max_memory, outp
     given, spell = solver_given(solver_options)
 
     def load():
-        model = compile_model(dungeon, goal)
+        model = compile_model(dungeon, goal, task)
         if output:
             from ..atomic import check_writable
             check_writable(output)   # before a long solve, not after it
@@ -176,14 +181,16 @@ def _read_plan_arg(plan: str):
 @click.argument("plan")
 @json_option
 @goal_option
+@task_option
 @budget_options
-def validate_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
+def validate_cmd(dungeon, plan, as_json, goal, task, time_limit, max_memory):
     """Replay PLAN (a file, one action a line, or - for stdin) in DUNGEON.
 
-    Exit 0 when it reaches the goal, 1 when it does not (saying at which step and why)."""
+    Exit 0 when it reaches the goal, 1 when it does not (saying at which step and why).
+    In a dungeon with a task every step is run and the goal checked after the last."""
     from ..simulate import replay
     with within_budget(time_limit, max_memory, as_json, dungeon):
-        model = compile_model(dungeon, goal)
+        model = compile_model(dungeon, goal, task)
         actions, path = _read_plan_arg(plan)
         result = replay(model, actions, path)
     if as_json:
@@ -321,15 +328,17 @@ def _structure_command(kind: str, summary: str):
     @click.option("--material", default="planks", show_default=True, help="The block the structure is made of (a mason material).")
     @click.option("--name", default=None, help="Dungeon name [default: KIND_WxLxH].")
     @click.option("-o", "--output", type=click.Path(dir_okay=False, writable=True), help="Write to FILE (atomically) instead of stdout.")
+    @click.option("--as-task", is_flag=True, help="Also give the structure as one task (domain mason_tasks; "
+                  "houses only): bcc solve then plans it with htn.")
     @json_option
-    def command(width, length, height, material, name, output, as_json):
+    def command(width, length, height, material, name, output, as_task, as_json):
         from ..generate_structures import generate_structure
-        text = generate_structure(kind, width, length, height, material=material, name=name)
+        text = generate_structure(kind, width, length, height, material=material, name=name, as_task=as_task)
         if output:
             write_output(output, text)
         if as_json:
             emit_json({"output": output, "kind": kind, "width": width, "length": length, "height": height,
-                       "material": material, "yaml": None if output else text})
+                       "material": material, "as_task": as_task, "yaml": None if output else text})
         elif not output:
             click.echo(text, nl=False)
     return command

@@ -55,17 +55,19 @@ def within_budget(time_limit: float | None, max_memory: float | None, as_json: b
 goal_option = click.option("--goal", metavar="EXPR", help="Use this goal instead of the dungeon's, e.g. 'agentInRoom(agent, red)', or a "
                            "blueprint file (FILE.yaml holding `structure:`).")
 json_option = click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
+task_option = click.option("--task", metavar="CALL", help="Do this task of the domain instead of the dungeon's "
+                           "`task:`, e.g. 'house(2, 2, 5, 5, 4, planks)' (bcc solve then picks htn).")
 
 
 def emit_json(data) -> None:
     click.echo(json.dumps(data, indent=2, default=str))
 
 
-def compile_model(dungeon: str, goal: str | None):
+def compile_model(dungeon: str, goal: str | None, task: str | None = None):
     """Compile what the user named; its warnings (e.g. an unused legend character) go to
     stderr, one `file:line:col: warning: ...` line each."""
     from ..compiler import compile_dungeon
-    model = compile_dungeon(dungeon, goal=goal)
+    model = compile_dungeon(dungeon, goal=goal, task=task)
     for warning in model.report.get("warnings", ()):
         click.echo(warning, err=True)
     return model

@@ -99,6 +99,8 @@ class Domain:
     binding: YMap                         # the `dungeon:` section, read by dungeon.py
     source: YMap
     start: Expr | None = None             # `dungeon.start`, parsed here (a cached domain needs no parser)
+    tasks: dict = field(default_factory=dict)     # compound tasks (tasks.py): name -> TaskDef
+    methods: dict = field(default_factory=dict)   # their methods, in the file's order: name -> MethodDef
 
 
 def resolve_domain_path(ref: str, relative_to: Path | None = None) -> Path:
@@ -127,7 +129,7 @@ def is_file(path: Path) -> bool:
 
 
 DOMAIN_KEYS = {"domain", "description", "extends", "types", "constants", "classes", "dungeon",
-               "functions", "failure", "actions"}
+               "functions", "failure", "actions", "tasks", "methods"}
 
 
 def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
@@ -168,6 +170,12 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
                        lambda section, name: _load_function(section, name, names_in_use), base)
     actions = _merge("action", data, "actions", base.actions if base else {},
                      lambda section, name: _load_action(section, name, names_in_use), base)
+    from types import SimpleNamespace
+    from .tasks import check_hierarchy, load_methods, load_tasks
+    read = SimpleNamespace(merge=_merge, params=_param_list, expr=_expr, ident=_ident)
+    tasks = load_tasks(data, base, names_in_use, read)
+    methods = load_methods(data, base, names_in_use, read)
+    check_hierarchy(tasks, methods, actions, functions, data)
     failure = _condition(data, "failure") if "failure" in data else (base.failure if base else None)
     binding = _merge_binding(data, base)
     start = _check_binding(data, binding, classes)
@@ -175,7 +183,7 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
     if "description" in data:
         check_text(data, "description", data["description"], "the description")
     return Domain(str(data["domain"]), str(path), str(data.get("description", "")).strip(), enums,
-                  constants, classes, functions, actions, failure, binding, data, start)
+                  constants, classes, functions, actions, failure, binding, data, start, tasks, methods)
 
 
 def _merge(what: str, data, key: str, inherited: dict, load, base) -> dict:

@@ -22,7 +22,7 @@ DUNGEONS_DIR = Path(__file__).resolve().parent.parent / "dungeons"
 FACINGS_KEYS = ("facing", "looking", "selected")
 # Spec section 5; a domain may add lists of named objects (its `dungeon.lists`).
 DUNGEON_KEYS = {"dungeon", "domain", "description", "height", "legend", "map", "agent", "inventory", "rooms",
-                "goal", "extends", "width", "depth", "blocks"}
+                "goal", "extends", "width", "depth", "blocks", "task"}
 
 
 @dataclass
@@ -46,6 +46,7 @@ class Dungeon:
     start_char: str | None = None
     structure: object = None                       # the goal's blueprint (structure.py), when it is one
     warnings: list = field(default_factory=list)   # BccErrors that do not stop loading (`file:line:col: warning: ...`)
+    task: list | None = None                       # the task network to do, in order: [Expr of an ast.Call]
 
     @property
     def sizes(self) -> dict[str, int]:
@@ -189,6 +190,10 @@ class _Builder:
             dungeon.goal = structure_expr(dungeon.structure, data["goal"], gclass.name, value_attrs[0])
         elif "goal" in data:
             dungeon.goal = _condition(data, "goal")
+        if "task" in data:
+            from .domain import _expr
+            from .tasks import task_calls
+            dungeon.task = task_calls(data, "task", _expr)
         return dungeon
 
     def size(self, key: str) -> int:

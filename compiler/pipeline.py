@@ -50,11 +50,16 @@ class Compiled:
 __all__ = ["compile_dungeon", "load_dungeon", "load_domain", "shipped_dungeons", "resolve_dungeon_path"]
 
 
-def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True) -> Model:
+def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True, task: str | None = None) -> Model:
     """Load, check, ground, analyse and emit. With `prune`, `successors` leaves out actions
-    that can never apply or never matter for the goal (relevance.py); `apply` keeps all."""
+    that can never apply or never matter for the goal (relevance.py); `apply` keeps all.
+    `task` (a call of one of the domain's tasks) replaces the dungeon's `task:`."""
     dungeon = _load(ref)
-    task = _ground(dungeon, _goal(dungeon, goal))
+    network = dungeon.task
+    if task is not None:
+        from .hierarchy import parse_task_option
+        network = parse_task_option(task)
+    task = _ground(dungeon, _goal(dungeon, goal, network))
     layout, initial, reach, an = _lay_out(task)
     search = (sorted(relevant_actions(task.actions, sorted(reach.applicable), task.goal, task.failure, an))
               if prune else list(range(len(task.actions))))
@@ -62,7 +67,12 @@ def compile_dungeon(ref: str | Path, goal: str | None = None, prune: bool = True
     emitter = Emitter(layout, enum_sizes)
     ns, source = emitter.build(task.actions, task.goal, task.failure, search)
     _check_start(task.grounder, emitter, ns, dungeon, initial)
-    return _model(task, layout, initial, reach, an, search, ns, source, enum_sizes)
+    hierarchy = None
+    if dungeon.domain.methods or dungeon.domain.tasks or network:   # methods are checked for every dungeon of their domain
+        from .hierarchy import build_hierarchy
+        hierarchy = build_hierarchy(task.grounder, dungeon, layout, enum_sizes, tuple(a.name for a in task.actions),
+                                    network, ns)
+    return _model(task, layout, initial, reach, an, search, ns, source, enum_sizes, hierarchy)
 
 
 @dataclass
@@ -112,9 +122,10 @@ def _lay_out(task: _Ground):
 
 
 def _model(task: _Ground, layout, initial: bytes, reach, an: Analysis, search: list, ns: dict, source: str,
-           enum_sizes: dict) -> Model:
+           enum_sizes: dict, hierarchy=None) -> Model:
     """The Model: the generated functions, the state's variables and grid, the agent's
-    position, and what layers above build on demand (`lazy`)."""
+    position, and what layers above build on demand (`lazy`; `hierarchy`: the methods
+    and task network the htn solver plans with, compiler/hierarchy.py)."""
     dungeon, actions, dom = task.dungeon, task.actions, task.dungeon.domain
 
     @functools.lru_cache(maxsize=1)
@@ -154,12 +165,24 @@ def _model(task: _Ground, layout, initial: bytes, reach, an: Analysis, search: l
         pre_texts=tuple(tuple(a.pre_text) for a in actions),
         is_goal=ns["goal"], is_failure=ns["failure"], variables=variables, grid=grid,
         position=position, position_static=static_pos, goal_positions=goal_positions, position_steps=steps,
-        report=_report(task, layout, initial, reach, search, goal_positions), source=source,
+        report={**_report(task, layout, initial, reach, search, goal_positions), **_hierarchy_report(dom, hierarchy)},
+        source=source,
         display=_display(dungeon, layout),
         search_actions=tuple(search), lazy={"compiled": lambda: compiled,
                                                     "layer_expanders": layer_expanders,
                                                     "layer_skips": layer_skips,
-                                                    "dense_functions": dense_functions})
+                                                    "dense_functions": dense_functions,
+                                                    "hierarchy": lambda: hierarchy})
+
+
+def _hierarchy_report(dom, hierarchy) -> dict:
+    """`bcc compile --json`'s tasks and methods (only for a domain that has some) and the
+    dungeon's task network (None without one)."""
+    if hierarchy is None:
+        return {}
+    from .tasks import describe
+    tasks, methods = describe(dom.tasks, dom.methods)
+    return {"tasks": tasks, "methods": methods, "task": hierarchy.network_text or None}
 
 
 def _report(task: _Ground, layout, initial: bytes, reach, search: list, goal_positions) -> dict:
@@ -217,7 +240,7 @@ def _load(ref) -> Dungeon:
     return load_cached(path, load_dungeon)
 
 
-def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
+def _goal(dungeon: Dungeon, goal: str | None, network=None) -> Expr:
     if goal is not None and goal.endswith((".yaml", ".yml")) and is_file(Path(goal)):
         return _structure_file(dungeon, goal)
     if goal is not None:
@@ -225,6 +248,9 @@ def _goal(dungeon: Dungeon, goal: str | None) -> Expr:
         from .parse import parse_expression   # lark: imported only when text is parsed
         where = Origin("--goal", 1, 1)
         return Expr(parse_expression(goal, where), where, goal)
+    if dungeon.goal is None and network:   # a task alone: done when the task is
+        from . import ast
+        return Expr(ast.Bool(True, (1, 1)), Origin(dungeon.path, 1, 1), "true")
     if dungeon.goal is None:
         raise BccError("the dungeon has no `goal`; add one or pass --goal EXPRESSION", dungeon.path)
     return dungeon.goal

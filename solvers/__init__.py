@@ -24,7 +24,7 @@ BUILTIN = {
     "idastar": ("bcc.solvers.idastar:solve", "IDA* (optimal, memory-bounded: keeps only the current path)"),
     "rmax": ("bcc.solvers.rmax:solve", "R-max reinforcement learning: learns the dynamics from episodes"),
     "qlearning": ("bcc.solvers.qlearning:solve", "tabular Q-learning, a model-free RL baseline"),
-    "htn": ("bcc.solvers.htn:solve", "total-order HTN progression over task networks (bcc import hddl)"),
+    "htn": ("bcc.solvers.htn:solve", "total-order HTN progression over task networks (a dungeon's task, bcc import hddl)"),
 }
 
 __all__ = ["Budget", "Result", "check_options", "default_solver", "describe_solvers", "get_solver", "list_solvers", "optimal_cost"]
@@ -45,14 +45,17 @@ STRUCTURE_ATOMS = 10   # cell atoms from which a goal counts as a structure
 
 
 def default_solver(model) -> str:
-    """`bcc solve`'s choice when no --solver is given: `build` for a structure goal (a
-    blueprint, or a conjunction of at least STRUCTURE_ATOMS cell atoms), for a goal with
-    at least two cell atoms to write, and for a goal that needs something gathered first
-    (a cell atom or an amount the goal asks for takes a supply the agent lacks at the
-    start, heuristics/supplies.py); else `astar`. The one place this rule lives
+    """`bcc solve`'s choice when no --solver is given: `htn` when the dungeon gives a task
+    (its `task:`, or --task); else `build` for a structure goal (a blueprint, or a
+    conjunction of at least STRUCTURE_ATOMS cell atoms), for a goal with at least two cell
+    atoms to write, and for a goal that needs something gathered first (a cell atom or an
+    amount the goal asks for takes a supply the agent lacks at the start,
+    heuristics/supplies.py); else `astar`. The one place this rule lives
     (docs/structures.md states it)."""
     from ..heuristics.goal_cells import CellReader, goal_cells
     from ..heuristics.supplies import supplies, wanted
+    if model.report.get("task"):
+        return "htn"
     if model.report.get("structure"):
         return "build"
     cells = goal_cells(model)

@@ -251,8 +251,9 @@ def test_reference_documents_every_domain_and_dungeon_key():
     rows = lambda text: set(re.findall(r"^\|\s*`([^`]+)`", text, re.M))  # noqa: E731 - first cells of table rows
     assert not DOMAIN_KEYS - rows(domain_part), f"top-level domain keys missing: {sorted(DOMAIN_KEYS - rows(domain_part))}"
     assert not DUNGEON_KEYS - rows(dungeon_part), f"dungeon keys missing: {sorted(DUNGEON_KEYS - rows(dungeon_part))}"
+    from bcc.compiler.tasks import METHOD_KEYS, TASK_KEYS
     nested = _check_keys_literals(ROOT / "compiler" / "domain.py") | _check_keys_literals(ROOT / "compiler" / "dungeon.py")
-    nested |= set(FACINGS_KEYS)
+    nested |= set(FACINGS_KEYS) | TASK_KEYS | METHOD_KEYS | _check_keys_literals(ROOT / "compiler" / "tasks.py")
     missing = sorted(nested - code_spans(prose))
     assert not missing, f"keys the loaders accept but docs/reference.md does not mention (as `code`): {missing}"
 

@@ -69,6 +69,7 @@ LAYER_OF = {
     "bcc.compiler.ground": "front end",
     "bcc.compiler.blocks": "front end",    # a dungeon's `blocks:` text
     "bcc.compiler.structure": "front end", # a dungeon's `structure:` goal (a blueprint) read into atoms
+    "bcc.compiler.tasks": "front end",     # a domain's `tasks:` and `methods:`, a dungeon's `task:`
     "bcc.generate": "front end",           # writes dungeon YAML, checking names as the front end does
     "bcc.generate_rooms": "front end",
     "bcc.generate_structures": "front end",  # writes structure dungeons (house, wall, tower, bridge)
@@ -82,6 +83,7 @@ LAYER_OF = {
     "bcc.compiler.layout": "back end",
     "bcc.compiler.emit": "back end",
     "bcc.compiler.pipeline": "back end",
+    "bcc.compiler.hierarchy": "back end",  # methods compiled into generated functions for one dungeon
     "bcc.pddl_io.bits": "back end",
     "bcc.pddl_io.compile": "back end",
     "bcc.pddl_io.importer": "back end",
