@@ -174,6 +174,42 @@ class Emitter:
                 c = expanded[diff] = bytes(c)
             return c
 
+        def derive(s, t):
+            """Cache the expansion of `t`, a successor of `s` whose expansion is cached,
+            when their changed cells differ by one entry (an action that writes one
+            cell): `s`'s expansion with that cell patched, found by comparing the two
+            diffs as bytes. A search that steps along one path (htn) then expands no
+            state by a pass over all its changed cells."""
+            if len(t) == NV:
+                return
+            dt, ds = t[NV:], s[NV:]
+            if dt in expanded:
+                return
+            cs = S0 if not ds else expanded.get(ds)
+            if cs is None:
+                return
+            lo, hi = 0, min(len(ds), len(dt)) // 4     # entries alike from the start: a binary search
+            while lo < hi:
+                mid = (lo + hi + 1) // 2
+                if ds[:4 * mid] == dt[:4 * mid]:
+                    lo = mid
+                else:
+                    hi = mid - 1
+            p = 4 * lo
+            if dt[p + 4:] == ds[p:] or dt[p + 4:] == ds[p + 4:]:    # one entry added, or one changed
+                e = int.from_bytes(dt[p:p + 4], "little")
+                value = e & 255
+            elif dt[p:] == ds[p + 4:]:                            # one removed: the cell is back at its start
+                e = int.from_bytes(ds[p:p + 4], "little")
+                value = S0[e >> 8]
+            else:
+                return
+            c = bytearray(cs)
+            c[e >> 8] = value
+            if len(expanded) >= keep:
+                expanded.clear()
+            expanded[dt] = bytes(c)
+
         def cells(s):
             """The mutable cells of compact state `s`, expanded: the start's when nothing
             changed, else cached per distinct diff (states that differ only in their
@@ -208,7 +244,7 @@ class Emitter:
             return bytes(n)
 
         self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,
-                       _merge=merge, _S0=S0, _expand=expand, _CC=expanded, _from_bytes=int.from_bytes)
+                       _merge=merge, _S0=S0, _expand=expand, _CC=expanded, _from_bytes=int.from_bytes, _derive=derive)
 
     # ---- expressions -------------------------------------------------------------------
     def simple(self, node) -> bool:

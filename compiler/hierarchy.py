@@ -58,6 +58,7 @@ class Hierarchy:
     root: Variant | None               # the dungeon's task network (None: the dungeon gives no task)
     network_text: list = field(default_factory=list)
     value_names: dict = field(default_factory=dict)   # enumeration -> its value names
+    derive: object = None              # (state, its successor): the successor's cells cached for the methods' reads
 
     def task_text(self, name: str, args: tuple) -> str:
         """`row(2, 1, 3, east)`: enumeration values by name, objects by name, bools as words."""
@@ -101,7 +102,8 @@ def build_hierarchy(g, dungeon, layout, enum_sizes: dict, action_names: tuple, n
         variants={t: [bind(v) for v in vs] for t, vs in variants.items()},
         root=bind(root) if root is not None else None,
         network_text=[" ".join(e.text.split()) for e in network or ()],
-        value_names={n: tuple(e.values) for n, e in dom.enums.items()})
+        value_names={n: tuple(e.values) for n, e in dom.enums.items()},
+        derive=model_ns.get("_derive"))
 
 
 def parse_task_option(text: str) -> list:

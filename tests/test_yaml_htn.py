@@ -276,3 +276,27 @@ def test_a_ten_cubed_house_is_one_task(cli, tmp_path):
     model = compile_dungeon(str(path))
     plan = plan_of(model)
     assert valid(model, plan) and plan.count("climb") == 11
+
+
+def test_cells_derived_along_a_plan_equal_a_fresh_expansion():
+    # ModelNetwork.apply caches each successor's expanded cells from its parent's
+    # (emit.py's derive: one entry added, changed or removed); every cached expansion
+    # must equal the one made from scratch from the state's changed cells.
+    from bcc.model import cell_entries
+    model = compile_dungeon(YARD)
+    plan_of(model)
+    ns = model.data("compiled").functions
+    assert len(ns["_CC"]) >= 8            # the ring's 8 blocks: 8 distinct diffs at least
+    for diff, cells in ns["_CC"].items():
+        fresh = bytearray(ns["_S0"])
+        for e in cell_entries(diff):
+            fresh[e >> 8] = e & 255
+        assert bytes(fresh) == cells
+    derive, s0 = ns["_derive"], model.initial
+    ns["_CC"].clear()
+    state = s0
+    for name in ["climb", "place_down_east", "move_east", "place_down_east"]:
+        nxt = model.apply(model.action_index(name), state)
+        derive(state, nxt)
+        state = nxt
+    assert len(ns["_CC"]) == 3             # climb's, then two placements' (a move changes no cell)

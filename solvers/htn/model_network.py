@@ -52,6 +52,7 @@ class ModelNetwork:
         self.model, self.hierarchy = model, hierarchy
         self.actions = frozenset(range(len(model.action_names)))
         self.apply_fns, self.is_goal, self.is_failure = model.apply_fns, model.is_goal, model.is_failure
+        self.derive = hierarchy.derive or (lambda s, t: None)
         shapes = [_Shape(v.task, v.shape) for vs in hierarchy.variants.values() for v in vs]
         costs = task_costs(shapes, self.actions)
         self.methods: dict = {}
@@ -66,26 +67,32 @@ class ModelNetwork:
     def expansions(self, name, args: tuple, state: StateStack) -> list:
         """(estimate, method, ground subtasks) for every way to decompose the task here,
         the least estimate first (ties in the file's order); name None: the dungeon's network."""
-        out, seen = [], set()
+        out = []
         s = state.current
         for est, variant, objects, values, fn in self.methods.get(name, ()) if name is not None else self.root:
             if objects and any(args[i] != obj for i, obj in objects):
                 continue
             given = args if len(values) == len(args) else tuple(args[i] for i in values)
             for subtasks in fn(s, *given):
-                key = (variant.method, subtasks)
+                out.append((est, variant, subtasks))
+        if len(out) > 1:   # the same subtasks by the same method (two bindings alike) are one choice
+            seen, unique = set(), []
+            for alt in out:
+                key = (alt[1].method, alt[2])
                 if key not in seen:
                     seen.add(key)
-                    out.append((est, variant, subtasks))
-        out.sort(key=lambda alt: alt[0])
+                    unique.append(alt)
+            out = sorted(unique, key=lambda alt: alt[0])
         return out
 
     def apply(self, name: int, args: tuple, state: StateStack) -> bool:
         """Apply the action if its preconditions hold and it does not end the episode in
         failure (as every search of bcc leaves failure states out, unless they are goals)."""
-        nxt = self.apply_fns[name](state.current)
+        s = state.current
+        nxt = self.apply_fns[name](s)
         if nxt is None or self.is_failure(nxt) and not self.is_goal(nxt):
             return False
+        self.derive(s, nxt)
         state.states.append(nxt)
         return True
 
