@@ -9,7 +9,8 @@ structure goals) and `gbfs` (plain greedy search on the blueprint goal).
 Each house is written once by `bcc generate house --as-task` (the task and the blueprint
 goal in one dungeon) and each solver runs on it in a child process of its own, which
 compiles the dungeon (CPU timed), runs the solver on the compiled model (CPU timed: the
-planning time, the same measure for every solver) and replays the plan in the simulator
+planning time, the same measure for every solver; the median of --repeat children is
+reported) and replays the plan in the simulator
 (the goal checked after the last step). The child's whole CPU (user + system, by the
 kernel) is reported too; the dungeon is compiled once before, so every child finds its
 YAML in bcc's cache alike. Targets (issue 31): a 10 x 10 x 10 house as one task in under
@@ -67,11 +68,22 @@ def run_child(path: Path, solver: str, limit: float) -> dict:
             "compile_cpu": round(row["compile_cpu"], 3), "solve_cpu": round(row["solve_cpu"], 4)}
 
 
+def median_run(runs: list) -> dict:
+    """The run with the median solve CPU, with every run's solve and process CPU beside it."""
+    ok = [r for r in runs if "solve_cpu" in r]
+    if not ok:
+        return runs[0]
+    mid = sorted(ok, key=lambda r: r["solve_cpu"])[len(ok) // 2]
+    return {**mid, "solve_cpu_runs": [r["solve_cpu"] for r in ok], "process_cpu_runs": [r["process_cpu"] for r in ok],
+            "all_valid": all(r.get("valid") for r in ok)}
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", default="5,7,10,15,20", help="house sides (width = length = height), comma-separated")
     ap.add_argument("--gbfs-up-to", type=int, default=5, help="run gbfs on houses up to this side")
     ap.add_argument("--time-limit", type=float, default=120.0, help="seconds per solve")
+    ap.add_argument("--repeat", type=int, default=3, help="children per house and solver; the median solve CPU is reported")
     ap.add_argument("--output", default=str(HERE / "houses_htn.json"))
     args = ap.parse_args()
     rows = []
@@ -84,9 +96,11 @@ def main() -> int:
             subprocess.run(BCC + ["compile", str(path)], check=True, capture_output=True)
             solvers = ["htn", "build"] + (["gbfs"] if n <= args.gbfs_up_to else [])
             for solver in solvers:
-                row = {"house": f"{n}x{n}x{n}", **run_child(path, solver, args.time_limit)}
+                runs = [run_child(path, solver, args.time_limit) for _ in range(args.repeat if solver != "gbfs" else 1)]
+                for r in runs:
+                    print(json.dumps({"house": n, **r}), file=sys.stderr, flush=True)
+                row = {"house": f"{n}x{n}x{n}", **median_run(runs)}
                 rows.append(row)
-                print(json.dumps(row), file=sys.stderr, flush=True)
     by = {(r["house"], r["solver"]): r for r in rows}
     print(f"{'house':>9} {'solver':>6} {'solved':>6} {'valid':>5} {'length':>6} {'solve CPU s':>11} "
           f"{'compile CPU s':>13} {'process CPU s':>13} {'flat/htn solve':>14}")

@@ -10,10 +10,12 @@ Its plan is the action sequence; `Result.decomposition` holds the decomposition 
 """
 from __future__ import annotations
 
+import functools
 import gc
 from dataclasses import dataclass
 
 from ...errors import BccError
+from ...model import Model
 from ..base import Budget, Meter, Result, budget_result
 from ..options import declare
 from .search import run_search
@@ -38,14 +40,8 @@ def takes_task_network(solve):
 def solve(model, budget: Budget, progress=None, **options) -> Result:
     """Total-order HTN progression: depth first over (state, task network), methods bound
     against the state as they are applied, tried least-work-first, loops cut."""
-    from ...hddl.task import HtnProblem
     meter = Meter(budget, progress)
-    if isinstance(model, HtnProblem):
-        from .facts import Facts
-        from .hddl_network import HddlNetwork
-        compiled = HddlNetwork(model)
-        facts = Facts(compiled.init, compiled.patterns)
-    else:
+    if isinstance(model, Model):   # (tested first: the HDDL front end is imported only for its problems)
         hierarchy = model.data("hierarchy")
         if hierarchy is None or hierarchy.root is None:
             raise BccError("the htn solver plans task networks: give the dungeon a `task:` (or bcc solve --task "
@@ -53,6 +49,14 @@ def solve(model, budget: Budget, progress=None, **options) -> Result:
         from .model_network import ModelNetwork, StateStack
         compiled = ModelNetwork(model, hierarchy)
         facts = StateStack(model.initial)
+    else:
+        from ...hddl.task import HtnProblem
+        if not isinstance(model, HtnProblem):
+            raise BccError("the htn solver plans task networks: a dungeon with a task, or an HDDL problem")
+        from .facts import Facts
+        from .hddl_network import HddlNetwork
+        compiled = HddlNetwork(model)
+        facts = Facts(compiled.init, compiled.patterns)
     was = gc.isenabled()
     gc.disable()   # the search's tuples form no cycles; a full collection would rescan them all
     try:
@@ -77,6 +81,7 @@ def solve(model, budget: Budget, progress=None, **options) -> Result:
 def _tree(out, text) -> dict:
     """The decomposition with the IPC format's numbering: actions 0..n-1 in plan order,
     then the compound tasks in the order they were decomposed."""
+    text = functools.lru_cache(maxsize=None)(text)   # most tasks recur (a step east, a block of one material)
     ids = {uid: i for i, (uid, _, _) in enumerate(out.plan)}
     for uid, *_ in out.decompositions[1:]:
         ids[uid] = len(ids)
