@@ -20,6 +20,7 @@ import itertools
 
 from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound, orders, ready, support_levels
 from ..heuristics.supplies import supplies, wanted
+from .shorten import eliminate
 from .scaffold import CANDIDATES, make_solid, stand_near, write_cell
 from ..errors import ModelError
 from .base import Budget, Meter, Result, budget_result
@@ -28,8 +29,9 @@ from .options import Option, declare
 NAME = "build"
 LIFTS = 2          # actions that write and move tried at the end of a walk (a climb, twice)
 GATHER_LIMIT = 100_000   # states a walk to a supply may visit (positions, in effect)
+SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_UP_TO = 40       # plans this short are handed to A* for a shorter one
-IMPROVE_STATES = 200_000
+IMPROVE_STATES = 100_000
 RETRY = 8          # atoms achieved before a set-aside atom is tried again
 
 
@@ -424,8 +426,8 @@ class _Builder:
 
 
 @declare(Option("local_limit", int, 4000, "expansions of one atom's greedy search before it is set aside", low=1),
-         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to A* (half the time "
-                "left, at most 200,000 states) for a shorter one; 0: never", low=0))
+         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to A* (a quarter of the time "
+                "left, at most 100,000 states) for a shorter one; 0: never", low=0))
 def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve: int = IMPROVE_UP_TO,
           **options) -> Result:
     """Builds a goal of many cell atoms one atom at a time (satisficing), reporting a lower bound."""
@@ -454,8 +456,10 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
             return meter.finish(rest)
         tail = [model.action_index(n) for n in rest.plan]
     actions = [*plan, *tail]
+    if len(actions) <= SHORTEN_UP_TO:   # detours out: O(n^2) steps of the simulator
+        actions = eliminate(model, actions, lambda: budget.time_limit is not None and meter.elapsed() > budget.time_limit)
     if 0 < len(actions) <= improve:   # short: an optimal search may finish and find a shorter plan
-        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed()) / 2
+        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed()) / 4
         mem = budget.max_memory_mb if budget.max_memory_mb is None else budget.max_memory_mb / 2
         better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem))
         for k in stats:

@@ -169,3 +169,15 @@ def test_build_on_gather_is_optimal_after_improving():
     result = get_solver("build")(model, Budget(time_limit=300))
     assert optimum.solved and result.solved and replays(model, result.plan)
     assert result.lower_bound <= optimum.cost == result.cost
+
+
+def test_action_elimination_takes_a_detour_out():
+    # the optimal 6-action plan for 2 <= logs.count (see above) with a step west and back
+    # in front: elimination must give a plan that still reaches the goal, shorter than 8
+    # and not shorter than the optimum
+    from bcc.solvers.shorten import eliminate
+    model = compile_dungeon(str(HERE / "gather.yaml"), goal="2 <= logs.count")
+    names = ["move_west", "move_east", "move_east", "move_east", "move_east", "break_east", "move_east", "break_east"]
+    assert replays(model, names)
+    out = [model.action_names[a] for a in eliminate(model, [model.action_index(n) for n in names])]
+    assert replays(model, out) and 6 <= len(out) < len(names)
