@@ -48,11 +48,12 @@ def default_solver(model) -> str:
     """`bcc solve`'s choice when no --solver is given: `htn` when the dungeon gives a task
     (its `task:`, or --task); else `build` for a structure goal (a blueprint, or a
     conjunction of at least STRUCTURE_ATOMS cell atoms), for a goal with at least two cell
-    atoms to write, and for a goal that needs something gathered first (a cell atom or an
+    atoms to write or one that nothing can write before something else is built (what it
+    rests on is missing), and for a goal that needs something gathered first (a cell atom or an
     amount the goal asks for takes a supply the agent lacks at the start,
     heuristics/supplies.py); else `astar`. The one place this rule lives
     (docs/structures.md states it)."""
-    from ..heuristics.goal_cells import CellReader, goal_cells
+    from ..heuristics.goal_cells import CellReader, goal_cells, ready
     from ..heuristics.supplies import supplies, wanted
     if model.report.get("task"):
         return "htn"
@@ -67,10 +68,11 @@ def default_solver(model) -> str:
     if cells is None:
         return "astar"
     read = CellReader(model)
-    todo = [v for p, v in cells.atoms if read(model.initial, *p) != v]
+    todo = [(p, v) for p, v in cells.atoms if read(model.initial, *p) != v]
     sup = supplies(model, cells)
-    short = sup.short(model.initial, todo, amounts) if sup else {}
-    return "build" if len(todo) >= 2 or short else "astar"
+    short = sup.short(model.initial, [v for _, v in todo], amounts) if sup else {}
+    unready = any(not ready(cells, read, model.initial, atom) for atom in todo)
+    return "build" if len(todo) >= 2 or short or unready else "astar"
 
 
 def _plugins() -> dict:

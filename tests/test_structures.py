@@ -181,3 +181,9 @@ def test_action_elimination_takes_a_detour_out():
     assert replays(model, names)
     out = [model.action_names[a] for a in eliminate(model, [model.action_index(n) for n in names])]
     assert replays(model, out) and 6 <= len(out) < len(names)
+
+
+def test_solve_picks_build_for_a_cell_with_nothing_below():
+    # steps.yaml: one stone at (2, 2, 1), one level up with nothing under it: the stone
+    # below must come first, so the goal is built, not searched by A*
+    assert default_solver(compile_dungeon(str(HERE / "steps.yaml"), goal="block[2, 2, 1].kind == stone")) == "build"
