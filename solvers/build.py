@@ -236,7 +236,7 @@ class _Builder:
                 out.add((x + dx, y + dy, z + dz))
         return out
 
-    def gather(self, state, short, todo):
+    def gather(self, state, short, todo, footing: bool = True):
         """The nearest way to raise one of the `short` variables: a walk ending with a
         supplier (or a walk that picks something up), else a greedy search toward the cells
         that hold a value taking it. (path, "ok" | "failed" | budget name)."""
@@ -280,7 +280,7 @@ class _Builder:
         places = [(x - o[0], y - o[1], z - o[2]) for x, y, z in cells for o in offsets]
         if not places:
             return None, "failed"
-        pre = stand_near(self, state, places, todo)
+        pre = stand_near(self, state, places, todo) if footing else None   # (footing gathers without footing)
         if pre:
             walk = self.walk(pre[-1][1], finish, GATHER_LIMIT)
             if walk is not None:

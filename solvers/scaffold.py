@@ -55,7 +55,7 @@ def gather_spare(b, state, todo):
              for var, _ in uses if var not in demand and sup.suppliers.get(var)}
     if not short:
         return None
-    path, _ = b.gather(state, short, todo)
+    path, _ = b.gather(state, short, todo, footing=False)
     return path
 
 
