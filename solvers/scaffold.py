@@ -94,6 +94,7 @@ def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
         sub = make_solid(b, state, _add(cell, rel), todo, depth - 1)
         if sub is None:
             return None
+        b.keep.add(_add(cell, rel))
         path += sub
         state = path[-1][1] if path else state
     writers = b.cells.achievers.get(value, ()) if value is not None else \
