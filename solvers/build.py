@@ -359,6 +359,7 @@ class _Builder:
                 blockers[q] -= 1
         plan, state, set_aside = [], start, {}    # set aside: position -> achievements left to wait
         reached[:] = [plan, state]
+        retried = -1               # plan length when the set-aside atoms were last given another try
         level = support_levels(cells, read, start)
         late = len(level) + 1      # atoms never made ready by the others come last
         wanted = self.wanted
@@ -419,6 +420,10 @@ class _Builder:
                 progressed = True
                 break
             if not progressed and lowest >= late:
+                if set_aside and retried != len(plan):   # the state moved on since: try them again
+                    set_aside.clear()
+                    retried = len(plan)
+                    continue
                 return plan, state, None
             if not progressed:      # every atom of the lowest level is set aside: the next level
                 set_aside.update((p, RETRY) for p in todo if level.get(p, late) <= lowest)
