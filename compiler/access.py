@@ -10,6 +10,9 @@ does this read or write". Each answer is a set of:
 - a keyed attribute chosen at run time (`inventory[selected].count`): the variables
   `vars_of(cls, attr)` names when the caller can list them (analysis: every key), else
   the marker `("keyed", cls, attr)`.
+
+The emitter's questions close the module: reads as (variables, reads anything else),
+and the state indices an action writes, as a sum or as constant stores.
 """
 from __future__ import annotations
 
@@ -110,3 +113,57 @@ def effect_locals(effects, acc: set | None = None) -> set:
                 if not isinstance(part, (ir.StateVar, str)):
                     acc |= ir.locals_of(part)
     return acc
+
+
+def var_reads(node) -> tuple[set, bool]:
+    """The variables an expression reads, and whether it reads anything else (a cell, a
+    keyed attribute chosen at run time), which makes it depend on any write."""
+    found = reads(node)
+    plain = state_vars(found)
+    return plain, len(plain) < len(found)
+
+
+def fixed_reads(node, layout) -> tuple[set, bool]:
+    """`var_reads`, where a cell of a layer no action changes (its x and z aside) reads
+    nothing that can change: a goal "stand on a cell of this kind" reads the position only."""
+    found = reads(node, fixed_layer=lambda y: layout.layer_index(y) is None)
+    plain = state_vars(found)
+    return plain, len(plain) < len(found)
+
+
+def writes_any(effects, variables: set) -> bool:
+    """May the effects change one of `variables` (a keyed write may change any)?"""
+    return any(isinstance(w, tuple) or w in variables for w in writes(effects))
+
+
+def delta_slots(effects, layout) -> set | None:
+    """The state indices the effects may write, when each is written at most once on any
+    path and all are fixed variables (no cell, no keyed write); else None. Such an action
+    can build its next state as one integer sum (`_new_state`)."""
+    out: set = set()
+    for e in effects:
+        if isinstance(e, ir.When):
+            then, orelse = delta_slots(e.then, layout), delta_slots(e.orelse, layout)
+            if then is None or orelse is None:
+                return None
+            these = then | orelse
+        elif isinstance(e, ir.SetVar):
+            these = {layout.by_var[e.var].index}
+        else:
+            return None
+        if out & these:
+            return None
+        out |= these
+    return out
+
+
+def constant_stores(effects, layout) -> list:
+    """[(state index, stored byte)] when every effect sets a variable to a constant
+    unconditionally (the action changes nothing where all already hold), else []."""
+    out = []
+    for e in effects:
+        if not (isinstance(e, ir.SetVar) and isinstance(e.value, ir.Const)):
+            return []
+        slot = layout.by_var[e.var]
+        out.append((slot.index, int(e.value.value) - slot.lo))
+    return out

@@ -17,86 +17,20 @@ from bisect import bisect_left
 import functools
 import itertools
 import math
-from dataclasses import dataclass
 
 from ..errors import BccError, InternalError, ModelError
 from ..model import cell_entries, fresh_from, pack_entry
 from . import ir
-from .access import CELLS, effect_locals, reads, state_vars, writes
+from .ir import GroundAction
+from .access import CELLS, constant_stores, delta_slots, effect_locals, var_reads, writes, writes_any
+from .emit_layers import LayerExpanders
 from .layout import Layout
 
-
-@dataclass
-class GroundAction:
-    name: str
-    cost: int
-    lets: list          # [(Local, IR)] in order
-    pre: list           # [IR] conjuncts (constant-true ones dropped)
-    pre_text: list      # source text of each conjunct, for explanations
-    effects: tuple      # IR effects
-
-
-def _var_reads(node) -> tuple[set, bool]:
-    """The variables an expression reads, and whether it reads anything else (a cell, a
-    keyed attribute chosen at run time), which makes it depend on any write."""
-    found = reads(node)
-    plain = state_vars(found)
-    return plain, len(plain) < len(found)
-
-
-def _fixed_reads(node, layout: Layout) -> tuple[set, bool]:
-    """`_var_reads`, where a cell of a layer no action changes (its x and z aside) reads
-    nothing that can change: a goal "stand on a cell of this kind" reads the position only."""
-    found = reads(node, fixed_layer=lambda y: layout.layer_index(y) is None)
-    plain = state_vars(found)
-    return plain, len(plain) < len(found)
-
-
-def _writes_any(effects, variables: set, layout: Layout) -> bool:
-    """May the effects change one of `variables` (a keyed write may change any)?"""
-    return any(isinstance(w, tuple) or w in variables for w in writes(effects))
-
-
-def _delta_slots(effects, layout: Layout) -> set | None:
-    """The state indices the effects may write, when each is written at most once on any
-    path and all are fixed variables (no cell, no keyed write); else None. Such an action
-    can build its next state as one integer sum (`_new_state`)."""
-    out: set = set()
-    for e in effects:
-        if isinstance(e, ir.When):
-            then, orelse = _delta_slots(e.then, layout), _delta_slots(e.orelse, layout)
-            if then is None or orelse is None:
-                return None
-            these = then | orelse
-        elif isinstance(e, ir.SetVar):
-            these = {layout.by_var[e.var].index}
-        else:
-            return None
-        if out & these:
-            return None
-        out |= these
-    return out
-
-
-def _constant_stores(effects, layout: Layout) -> list:
-    """[(state index, stored byte)] when every effect sets a variable to a constant
-    unconditionally (the action changes nothing where all already hold), else []."""
-    out = []
-    for e in effects:
-        if not (isinstance(e, ir.SetVar) and isinstance(e.value, ir.Const)):
-            return []
-        slot = layout.by_var[e.var]
-        out.append((slot.index, int(e.value.value) - slot.lo))
-    return out
-
-
-MAX_GROUPS = 8        # layer expanders per model past the plain one, at most (`layer_functions`)
-MAX_INLINED = 2000    # inlined action bodies over all layer expanders, at most
 
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}   # c OP v  <=>  v MIRROR[OP] c
 
 
-class Emitter:
+class Emitter(LayerExpanders):
     def __init__(self, layout: Layout, enum_sizes: dict, compact: bool = True):
         self.L = layout
         self.enum_sizes = enum_sizes
@@ -413,7 +347,7 @@ class Emitter:
         shift = 8 * int(index)
         change = f"({stored} - s[{index}])"
         if value is not None and not ir.locals_of(value):
-            reads, complex_ = _var_reads(value)
+            reads, complex_ = var_reads(value)
             if not complex_ and {self.L.by_var[v].index for v in reads} <= {int(index)}:
                 code = compile(f"{change} << {shift}", "<bcc table>", "eval")
                 old = bytearray(int(index) + 1)
@@ -495,7 +429,7 @@ class Emitter:
         plus each written byte's change shifted to its place, turned back into bytes
         (`_L` long, so the changed cells after the variables are kept): one object per
         next state instead of a bytearray copy and its bytes copy."""
-        if sums and self.compact and _delta_slots(a.effects, self.L) is not None:
+        if sums and self.compact and delta_slots(a.effects, self.L) is not None:
             self.delta = self.uses_int = True
             try:
                 lines = [f"{indent}_d = 0"] + self.effects(a.effects, indent, a.name)
@@ -558,7 +492,7 @@ class Emitter:
         next state on. With `failure`, what `live` leaves out is left out (see
         `successors_source`)."""
         live = failure is not None
-        reads, complex_failure = _var_reads(failure) if live else (set(), False)
+        reads, complex_failure = var_reads(failure) if live else (set(), False)
         failure_false = live and isinstance(failure, ir.Const) and not failure.value
         lines = []
         for i in search:
@@ -574,74 +508,19 @@ class Emitter:
                     lines.append(f"{indent}if {text}:")
                     indent += "    "
             if live:
-                consts = _constant_stores(a.effects, self.L)
+                consts = constant_stores(a.effects, self.L)
                 if consts:
                     lines.append(f"{indent}if {' or '.join(f's[{k}] != {v}' for k, v in consts)}:")
                     indent += "    "
             made, result = self._new_state(a, indent, sums=True)
             lines += made
-            if live and not failure_false and (complex_failure or _writes_any(a.effects, reads, self.L)):
+            if live and not failure_false and (complex_failure or writes_any(a.effects, reads)):
                 lines.append(f"{indent}t = {result}")
                 lines.append(f"{indent}if not {self._test_on_t(failure, 'failure')} or goal(t):")
                 lines += keep(i, "t", indent + "    ")
             else:
                 lines += keep(i, result, indent)
         return lines
-
-    def layer_source(self, name: str, actions: list[GroundAction], search: list[int], goal, failure,
-                     group_of: dict, skip=frozenset()) -> str:
-        """`name(states, seen, outs)`: `fresh` over a run of states in one loop, for a
-        layered search (breadth-first, blind with equal costs). A next state not yet in
-        `seen` is stored there (its parent as value) and appended to `outs[g]`, g the
-        group of the action that made it (`group_of`, else 0), so the next layer knows
-        which actions undid it (`skip`: this function's states were all made by an action
-        those undo; their next states are certain duplicates, never built). It returns
-        how many next states there were; when one is a goal, at once, the count's
-        complement (negative), that goal being the last of its group's list. The goal
-        is tested only after actions that may change it (every state handed in is not a
-        goal), inline where it reads only variables and fixed cells."""
-        self.uses_cells = False
-        failure_false = isinstance(failure, ir.Const) and not failure.value
-        goal_reads, goal_complex = _fixed_reads(goal, self.L)
-        goal_test = self._test_on_t(goal, "goal")
-        groups = sorted({group_of.get(i, 0) for i in search if i not in skip} | {0})
-        body = []
-        if not failure_false:
-            body += [f"        if {self.ex(failure)}:",
-                     "            _r = _layer_slow(s, seen, outs)",
-                     "            if _r < 0: return ~(_k + ~_r)",
-                     "            _k += _r",
-                     "            continue"]
-        counted = [0]   # next states every expansion makes: counted once per state
-
-        def keep(i: int, state: str, indent: str) -> list[str]:
-            out = [] if state == "t" else [f"{indent}t = {state}"]
-            if indent == "        ":
-                counted[0] += 1
-            else:
-                out.append(f"{indent}_k += 1")
-            out += [f"{indent}if t not in seen:",
-                    f"{indent}    seen[t] = s",
-                    f"{indent}    _a{group_of.get(i, 0)}(t)"]
-            if goal_complex or _writes_any(actions[i].effects, goal_reads, self.L):
-                out.append(f"{indent}    if {goal_test}: return ~_k")
-            return out
-
-        body += self._search_body(actions, search, failure, "        ", keep, skip)
-        if counted[0]:
-            body.insert(5 if not failure_false else 0, f"        _k += {counted[0]}")
-        nv = self.L.grid_base
-        prologue = []
-        if self.uses_cells:
-            prologue.append(f"        c = _S0 if len(s) == {nv} else _CC.get(s[{nv}:]) or _expand(s[{nv}:])")
-        if self.uses_int:
-            prologue.append("        _I = _from_bytes(s, 'little'); _L = len(s)")
-        self.uses_cells = self.uses_int = False
-        head = [f"def {name}(states, seen, outs):"]
-        head += [f"    _a{g} = outs[{g}].append" for g in groups]
-        head += ["    _k = 0", "    for s in states:"]
-        loop = prologue + body or ["        pass"]   # no actions: nothing to expand
-        return "\n".join(head + loop + ["    return _k"])
 
     def _test_on_t(self, node, fallback: str) -> str:
         """Condition `node` on next state `t`: inline when it reads only variables and
@@ -706,49 +585,3 @@ class Emitter:
             # compiled on first use: only breadth-first and blind searches run them
             ns["_build_layers"] = functools.partial(self.layer_functions, actions, goal_ir, failure, search, ns)
         return ns, source
-
-    def layer_functions(self, actions: list[GroundAction], goal, failure, search: list[int], ns: dict) -> tuple:
-        """The layer expanders (`layer_source`), compiled into `ns`: group 0 for the start
-        and states made by actions after which nothing is skipped, then one per action
-        after which some are (inverses.py: its inverses, and the earlier actions it
-        commutes with), at most MAX_GROUPS. Their source is kept in `ns["_layers_source"]`,
-        the inverses and the skips by action index in `ns["_undo"]` and `ns["_skips"]`."""
-        from .inverses import find_inverses, find_skips
-        apply_fns = [ns[f"apply_{i}"] for i in range(len(actions))]
-        reads, complex_failure = _var_reads(failure)
-        failure_reads = None if complex_failure else {self.L.by_var[v].index for v in reads}
-        undo = find_inverses(actions, search, self.L, apply_fns)
-        reads, complex_goal = _fixed_reads(goal, self.L)
-        goal_reads = None if complex_goal else {self.L.by_var[v].index for v in reads}
-        skips = find_skips(actions, search, self.L, apply_fns, failure_reads, undo, goal_reads)
-        ns["_undo"] = {a: tuple(sorted(b)) for a, b in undo.items()}
-        ns["_skips"] = {a: tuple(sorted(b)) for a, b in skips.items()}
-        # each group is a copy of every action's code: a few, and not for thousands of actions
-        most = min(MAX_GROUPS, max(0, MAX_INLINED // max(1, len(search)) - 1))
-        makers = [i for i in search if i in skips][:most]
-        group_of = {a: g for g, a in enumerate(makers, 1)}
-        parts = [self.layer_source(f"layer_{g}", actions, search, goal, failure, group_of,
-                                   skips[makers[g - 1]] if g else frozenset())
-                 for g in range(len(makers) + 1)]
-        source = "\n\n".join(parts)
-        for name, value in self.ns.items():   # tables the new code made
-            ns.setdefault(name, value)
-        exec(compile(source, "<bcc model layers>", "exec"), ns)
-        ns["_layers_source"] = source
-        live_slow, is_goal, groups = ns["_live_slow"], ns["goal"], tuple(group_of.get(i, 0) for i in range(len(actions)))
-
-        def layer_slow(s, seen, outs):
-            """A state that already fails: `live`'s filter, then the same bookkeeping."""
-            k = 0
-            for a, n in live_slow(s):
-                k += 1
-                if n not in seen:
-                    seen[n] = s
-                    outs[groups[a]].append(n)
-                    if is_goal(n):
-                        return ~k
-            return k
-
-        ns["_layer_slow"] = layer_slow
-        return tuple(ns[f"layer_{g}"] for g in range(len(makers) + 1))
-

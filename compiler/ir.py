@@ -148,6 +148,17 @@ class When:
     orelse: tuple
 
 
+@dataclass
+class GroundAction:
+    """One action of the ground task, its parameters bound (compiler/ground.py builds it)."""
+    name: str
+    cost: int
+    lets: list          # [(Local, IR)] in order
+    pre: list           # [IR] conjuncts (constant-true ones dropped)
+    pre_text: list      # source text of each conjunct, for explanations
+    effects: tuple      # IR effects
+
+
 TRUE = Const(True, "bool")
 FALSE = Const(False, "bool")
 

@@ -21,7 +21,8 @@ from .abstract import Abstract, maybe_true
 from .domain import Expr, load_domain
 from .domain import is_file
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
-from .emit import Emitter, GroundAction
+from .emit import Emitter
+from .ir import GroundAction
 from .ground import Ctx, Grounder, check_nesting
 from .layout import make_layout
 from .reachability import Analysis, reachable

@@ -82,6 +82,7 @@ LAYER_OF = {
     "bcc.compiler": "back end",            # compile_dungeon, the YAML pipeline's entry
     "bcc.compiler.layout": "back end",
     "bcc.compiler.emit": "back end",
+    "bcc.compiler.emit_layers": "back end",   # the layer expanders, a mixin of the emitter
     "bcc.compiler.pipeline": "back end",
     "bcc.compiler.hierarchy": "back end",  # methods compiled into generated functions for one dungeon
     "bcc.pddl_io.bits": "back end",
