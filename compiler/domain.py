@@ -40,6 +40,9 @@ class EnumType:
     properties: dict[str, list]           # property -> value per dense index
     prop_types: dict = field(default_factory=dict)  # property -> "bool" | "int" | an enumeration name
     prop_defaults: dict = field(default_factory=dict)  # property -> its declared default
+    # table properties (`per: E`): property -> E; each value's entry is then a dict from E's
+    # value names to values (entries left out take the default), read as `v.prop[e]`
+    prop_per: dict = field(default_factory=dict)
 
     def index(self, name: str) -> int:
         return self.values.index(name)
@@ -386,7 +389,8 @@ def _ident(container, key, value, what: str) -> str:
 def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
     """Enumerations; a type the base domain has already gets the new values appended."""
     enums = {name: EnumType(e.name, list(e.values), list(e.ids), {p: list(v) for p, v in e.properties.items()},
-                            dict(e.prop_types), dict(e.prop_defaults)) for name, e in inherited.items()}
+                            dict(e.prop_types), dict(e.prop_defaults), dict(e.prop_per))
+             for name, e in inherited.items()}
     if section is None:
         return enums
     if not isinstance(section, YMap):
@@ -403,6 +407,7 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
             raise error_at(section, tname, "a type needs `values` (a list or a mapping)")
         check_keys(tdef, {"values", "properties"}, {"values"}, f"type {tname!r}")
         enum = enums[tname]
+        inherited_values = set(inherited[tname].values) if tname in inherited else set()
         props = tdef.get("properties") or YMap()
         if not isinstance(props, YMap):
             raise error_at(tdef, "properties", "`properties` maps property names to defaults")
@@ -411,18 +416,25 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
             _ident(props, p, p, "a property name")
             if p in enum.properties:
                 raise error_at(props, p, f"type {tname!r} already has the property {p!r}", on_key=True)
-            if isinstance(d, YMap):  # {type: other_enum, default: value}
-                check_keys(d, {"type", "default"}, {"type", "default"}, f"property {p!r}")
-                if not isinstance(d["type"], str) or d["type"] not in enums:
-                    raise error_at(d, "type", f"unknown type {d['type']!r}{suggest(str(d['type']), enums)}")
+            if isinstance(d, YMap):  # {type: T, default: value}, and with `per: E` a table
+                check_keys(d, {"type", "default", "per"}, {"type", "default"}, f"property {p!r}")
+                known = list(enums) + list(BUILTIN_TYPES)
+                if not isinstance(d["type"], str) or d["type"] not in known:
+                    raise error_at(d, "type", f"unknown type {d['type']!r}{suggest(str(d['type']), known)}")
+                if "per" in d:
+                    if not isinstance(d["per"], str) or d["per"] not in enums:
+                        raise error_at(d, "per", f"`per` names the enumeration that indexes the table; "
+                                                 f"unknown type {d['per']!r}{suggest(str(d['per']), enums)}")
+                    enum.prop_per[p] = d["per"]
                 enum.prop_types[p] = d["type"]
                 defaults[p] = d["default"]
+                pending.append((enum, p, d["default"], d, "default", False))
             elif isinstance(d, (bool, int)):
                 enum.prop_types[p] = "bool" if isinstance(d, bool) else "int"
                 defaults[p] = d
             else:
                 raise error_at(props, p, "a property default is true/false, a number, or {type: T, default: V}")
-            enum.properties[p] = [defaults[p]] * len(enum.values)
+            enum.properties[p] = [{} if p in enum.prop_per else defaults[p]] * len(enum.values)
             enum.prop_defaults[p] = defaults[p]
         values = tdef["values"]
         if isinstance(values, YList):
@@ -438,6 +450,16 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
             if not isinstance(vdef, YMap):
                 raise error_at(*where, "a value's definition must be a mapping, e.g. {id: 7}")
             check_keys(vdef, {"id"} | set(enum.properties), set(), f"value {vname!r}")
+            if str(vname) in inherited_values:   # a base's value, listed again to set its properties
+                if "id" in vdef:
+                    raise error_at(vdef, "id", f"{vname!r} is listed twice in {tname!r}: it is the base domain's "
+                                               "value, whose id stays; an extending domain may set its properties "
+                                               "only", on_key=True)
+                inherited_values.discard(str(vname))   # set once
+                index = enum.values.index(str(vname))
+                for p in vdef:
+                    enum.properties[p][index] = _property_value(enum, p, vdef, defaults, pending)
+                continue
             if str(vname) in enum.values:
                 raise error_at(*where, f"{vname!r} is listed twice in {tname!r}")
             vid = vdef.get("id", len(enum.values))
@@ -448,22 +470,63 @@ def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
             enum.values.append(str(vname))
             enum.ids.append(vid)
             for p in enum.properties:
-                default = defaults[p] if p in defaults else enum.prop_defaults.get(p)
-                v = vdef.get(p, default)
-                pending.append((enum, p, v, vdef if p in vdef else None))
-                enum.properties[p].append(v)
-    for enum, p, v, vdef in pending:  # check property values once every type is complete
-        ptype = enum.prop_types[p]
-        ok = v in enums[ptype].values if ptype in enums else \
-            (isinstance(v, bool) if ptype == "bool" else isinstance(v, int) and not isinstance(v, bool))
-        if not ok:
-            raise (error_at(vdef, p, f"property {p!r} must be a {ptype}") if vdef is not None
-                   else BccError(f"property {p!r} of {enum.name!r} must be a {ptype}"))
+                enum.properties[p].append(_property_value(enum, p, vdef, defaults, pending))
+    for enum, p, v, where, key, entry in pending:  # check property values once every type is complete
+        per = enum.prop_per.get(p)
+        if entry and key not in enums[per].values:
+            raise error_at(where, key, f"{shorten(repr(key))} is not a value of {per!r}, which indexes the table "
+                                       f"{enum.name}.{p}{suggest(str(key), enums[per].values)}", on_key=True)
+        _check_property_value(enums, enum, p, v, where, key)
     for enum in enums.values():  # enum-valued properties are stored as dense indices
         for p, ptype in enum.prop_types.items():
-            if ptype in enums:
-                enum.properties[p] = [v if isinstance(v, int) else enums[ptype].index(v) for v in enum.properties[p]]
+            if ptype not in enums:
+                continue
+            dense = lambda v: v if isinstance(v, int) else enums[ptype].index(v)
+            if p in enum.prop_per:
+                enum.properties[p] = [{k: dense(v) for k, v in row.items()} for row in enum.properties[p]]
+                if not isinstance(enum.prop_defaults[p], int):
+                    enum.prop_defaults[p] = dense(enum.prop_defaults[p])
+            else:
+                enum.properties[p] = [dense(v) for v in enum.properties[p]]
     return enums
+
+
+def _property_value(enum: EnumType, p: str, vdef, defaults: dict, pending: list):
+    """Property `p` of a value defined by `vdef` (a table's entries as a dict), noted in
+    `pending` to be checked once every type is complete."""
+    if p in enum.prop_per:   # a table: {index value: entry}
+        entries = vdef.get(p, YMap())
+        if not isinstance(entries, YMap):
+            raise error_at(vdef, p, f"property {p!r} is a table: a mapping from values of "
+                                    f"{enum.prop_per[p]!r} to {enum.prop_types[p]}, e.g. {{name: 1}}")
+        for key in entries:
+            pending.append((enum, p, entries[key], entries, key, True))
+        return dict(entries)
+    v = vdef.get(p, defaults[p] if p in defaults else enum.prop_defaults.get(p))
+    pending.append((enum, p, v, vdef if p in vdef else None, p, False))
+    return v
+
+
+def _check_property_value(enums, enum: EnumType, p: str, v, where, key) -> None:
+    """A property's value (or a table entry, or a declared default) is of its type."""
+    ptype = enum.prop_types[p]
+    ok = v in enums[ptype].values if ptype in enums else \
+        (isinstance(v, bool) if ptype == "bool" else isinstance(v, int) and not isinstance(v, bool))
+    if ok:
+        return
+    shown = {"int": "an int", "bool": "a bool"}.get(ptype, f"a value of {ptype!r}")
+    if where is None:
+        raise BccError(f"property {p!r} of {enum.name!r} must be {shown}")
+    raise error_at(where, key, f"property {p!r} must be {shown}, found {shorten(repr(v))}"
+                               f"{suggest(str(v), enums[ptype].values) if ptype in enums else ''}")
+
+
+def table_row(enums: dict, enum: EnumType, p: str, index: int) -> tuple:
+    """Entry `index` of the table property `p`, as a tuple over the values of its `per`
+    enumeration in order (values a table leaves out, or added by a later domain, take the
+    property's default)."""
+    row, default = enum.properties[p][index], enum.prop_defaults[p]
+    return tuple(row.get(name, default) for name in enums[enum.prop_per[p]].values)
 
 
 def _load_constants(data) -> dict[str, tuple[int, ...]]:

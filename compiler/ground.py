@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from ..errors import BccError
 from . import ast, ir
-from .domain import ClassDef, Expr
+from .domain import ClassDef, Expr, table_row
 from .dungeon import Dungeon
 from .limits import MAX_GENERATED_NESTING, MAX_GRID_CELLS, MAX_GROUND_DEPTH, MAX_GROUND_EFFECTS, MAX_KEYED_OBJECTS
 from .source import suggest
@@ -41,8 +41,16 @@ class ClassName:
 
 @dataclass(frozen=True)
 class Table:
+    """A table indexed by `[...]`: a list constant (`dx[d]`, indexed by an int), or a table
+    property of an enumeration value (`r.uses[m]`, indexed by a value of its `per` type).
+    With `row` (a run-time enumeration value), `values` holds every value's row, one after
+    another, each `width` long."""
     name: str
     values: tuple
+    index_type: str = "int"
+    value_type: str = "int"
+    row: object = None
+    width: int = 0
 
 
 class Ctx:
@@ -213,11 +221,18 @@ class Grounder:
             enum = self.dom.enums[otype]
             if node.name not in enum.properties:
                 raise ctx.error(node, f"type {otype!r} has no property {node.name!r}{suggest(node.name, enum.properties)}")
-            table = tuple(enum.properties[node.name])
             ptype = enum.prop_types.get(node.name, "int")
+            label = f"{otype}.{node.name}"
+            if node.name in enum.prop_per:   # a table: indexed next, `r.uses[m]`
+                per = enum.prop_per[node.name]
+                if isinstance(obj, ir.Const):
+                    return Table(label, table_row(self.dom.enums, enum, node.name, obj.value), per, ptype)
+                rows = [table_row(self.dom.enums, enum, node.name, i) for i in range(len(enum.values))]
+                return Table(label, tuple(v for r in rows for v in r), per, ptype, obj, len(self.dom.enums[per].values))
+            table = tuple(enum.properties[node.name])
             if isinstance(obj, ir.Const):
                 return ir.Const(table[obj.value], ptype)
-            return ir.Lookup(table, obj, ptype, f"{otype}.{node.name}")
+            return ir.Lookup(table, obj, ptype, label)
         raise ctx.error(node, f"type error: {otype} has no attribute {node.name!r}")
 
     def attr_of(self, obj, attr: str, node, ctx):
@@ -263,13 +278,18 @@ class Grounder:
         if isinstance(obj, Table):
             if len(node.args) != 1:
                 raise ctx.error(node, f"the table {obj.name!r} takes one index")
-            index = self.expr(node.args[0], ctx, "int")
-            self.expect(index, "int", node.args[0], ctx)
+            index = self.expr(node.args[0], ctx, obj.index_type)
+            if self.type_of(index) != obj.index_type:
+                raise ctx.error(node.args[0], f"type error: the table {obj.name!r} is indexed by "
+                                              f"{obj.index_type}, found {self.type_of(index)}")
+            if obj.row is not None:   # a run-time row: one lookup in the rows laid end to end
+                at = ir.Arith("+", ir.Arith("*", obj.row, ir.Const(obj.width, "int")), index)
+                return ir.Lookup(obj.values, at, obj.value_type, obj.name)
             if isinstance(index, ir.Const):
                 if not 0 <= index.value < len(obj.values):
                     raise ctx.error(node, f"index {index.value} is outside the table {obj.name!r} (size {len(obj.values)})")
-                return ir.Const(obj.values[index.value], "int")
-            return ir.Lookup(obj.values, index, "int", obj.name)
+                return ir.Const(obj.values[index.value], obj.value_type)
+            return ir.Lookup(obj.values, index, obj.value_type, obj.name)
         raise ctx.error(node, f"type error: {self.type_of(obj)} cannot be indexed")
 
     def x_Call(self, node, ctx, hint):
@@ -367,7 +387,27 @@ class Grounder:
         if all(isinstance(v, ir.Const) for v in values):
             ok = all(_cmp(op, a.value, b.value) for op, a, b in zip(node.ops, values, values[1:]))
             return ir.Const(ok, "bool")
+        if len(node.ops) == 1:
+            known = self.by_range(node.ops[0], *values)
+            if known is not None:
+                return ir.Const(known, "bool")
         return ir.Cmp(tuple(node.ops), tuple(values))
+
+    def by_range(self, op: str, left, right) -> bool | None:
+        """`attribute op constant` (either way round) decided by the attribute's declared
+        range alone (`s.count >= 0` where count ranges over [0, 64]), else None."""
+        if isinstance(left, ir.Const):
+            left, right, op = right, left, {"<": ">", "<=": ">=", ">": "<", ">=": "<="}.get(op, op)
+        if not (isinstance(left, ir.Var) and isinstance(right, ir.Const) and left.type == "int"):
+            return None
+        rng = self.attr_range(self.dom.classes[left.var.cls], left.var.attr)
+        if rng is None:
+            return None
+        lo, hi = rng
+        outcomes = {_cmp(op, lo, right.value), _cmp(op, hi, right.value)}
+        if op in ("==", "!=") and lo <= right.value <= hi:
+            return None
+        return outcomes.pop() if len(outcomes) == 1 else None
 
     def x_And(self, node, ctx, hint):
         return make_bool("and", [self.bool_expr(node.left, ctx), self.bool_expr(node.right, ctx)])

@@ -23,7 +23,7 @@ from .domain import is_file
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
 from .emit import Emitter
 from .ir import GroundAction
-from .ground import Ctx, Grounder, check_nesting
+from .ground import Ctx, Grounder, ObjRef, check_nesting
 from .layout import make_layout
 from .reachability import Analysis, reachable
 from .access import reads
@@ -95,7 +95,7 @@ def _ground(dungeon: Dungeon, goal_src: Expr) -> _Ground:
     change, the second folds every other read into a constant."""
     Grounder(dungeon, None).check_domain()
     discovery = Grounder(dungeon, None)
-    _ground_actions(discovery, dungeon)
+    _ground_actions(discovery, dungeon, symbolic_values=True)
     dynamic = {w for w in discovery.writes if w[0] != "<grid>"}
     g = Grounder(dungeon, dynamic)
     _check_keyed_objects(g, dungeon)
@@ -297,25 +297,42 @@ def _grid_value_attr(d: Dungeon) -> str:
     return next(a for a in cdef.attrs if a not in cdef.key)
 
 
-def _ground_actions(g: Grounder, d: Dungeon) -> list[GroundAction]:
+def _ground_actions(g: Grounder, d: Dungeon, symbolic_values: bool = False) -> list[GroundAction]:
+    """Each schema once per combination of its parameters' choices: the named objects of a
+    class, or the values of an enumeration (`params: {r: recipe}`). A schema with an
+    enumeration parameter is grounded only for the values its preconditions allow in some
+    state: a combination whose preconditions are false whatever the state is left out
+    (`m.tool_needed > 0` keeps the values of m that need one). With `symbolic_values` (the
+    pass that only finds which attributes actions write), an enumeration parameter is one
+    run-time stand-in instead of each value: the same attributes, grounded once."""
     out = []
+    enums = d.domain.enums
     for schema in d.domain.actions.values():
         choices = []
         for p in schema.params:
+            if p.type in enums:
+                choices.append([(p.name, p.name, ir.Local(f"__{p.name}", p.type))] if symbolic_values else
+                               [(p.name, v, ir.Const(i, p.type)) for i, v in enumerate(enums[p.type].values)])
+                continue
             if p.type not in g.by_class or d.domain.classes[p.type].key:
                 raise schema.effects.where.error(
-                    f"action {schema.name}: parameter {p.name!r} must be of a class of named objects, not {p.type!r}")
-            choices.append([(p.name, obj) for obj in g.by_class[p.type]])
+                    f"action {schema.name}: parameter {p.name!r} must be of a class of named objects "
+                    f"or an enumeration, not {p.type!r}")
+            choices.append([(p.name, obj, ObjRef(obj, p.type)) for obj in g.by_class[p.type]])
+        multi = any(len(c) > 1 for c in choices)
+        by_value = any(p.type in enums for p in schema.params)
         for combo in itertools.product(*choices):
-            multi = any(len(g.by_class[p.type]) > 1 for p in schema.params)
-            name = f"{schema.name}({', '.join(o for _, o in combo)})" if multi else schema.name
-            out.append(_ground_one(g, schema, name, combo, len(out)))
+            name = f"{schema.name}({', '.join(o for _, o, _ in combo)})" if multi else schema.name
+            action = _ground_one(g, schema, name, combo, len(out), skip_false=by_value)
+            if action is not None:
+                out.append(action)
     return out
 
 
-def _ground_one(g: Grounder, schema, name: str, combo, number: int) -> GroundAction:
-    from .ground import ObjRef
-    env = {pname: ObjRef(obj, g.d.objects[obj][0]) for pname, obj in combo}
+def _ground_one(g: Grounder, schema, name: str, combo, number: int, skip_false: bool = False) -> GroundAction | None:
+    """The action for one combination; with `skip_false`, None when a precondition is false
+    whatever the state is."""
+    env = {pname: value for pname, _, value in combo}
     lets = []
     for let_name, src in schema.lets:
         value = g.expr(src.node, Ctx(src, env))
@@ -331,6 +348,8 @@ def _ground_one(g: Grounder, schema, name: str, combo, number: int) -> GroundAct
         cond = g.bool_expr(src.node, Ctx(src, env))
         if isinstance(cond, ir.Const) and cond.value:
             continue
+        if skip_false and isinstance(cond, ir.Const):
+            return None
         pre.append(cond)
         texts.append(" ".join(src.text.split()))
     effects = g.effects(schema.effects.node, Ctx(schema.effects, env))

@@ -1,0 +1,195 @@
+"""Recipes as data: enumeration parameters, table properties (`per:`), a base's values
+given properties by an extending domain, range folding (compiler/domain.py, ground.py,
+pipeline.py), and the crafting domain that uses them (domains/crafting.yaml).
+
+Optimal costs come from breadth-first search and A* (two solvers) and a hand derivation,
+never from the solver under test."""
+from __future__ import annotations
+
+import json
+import re
+import textwrap
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from bcc.cli import main
+from bcc.compiler import compile_dungeon
+from bcc.compiler.domain import DOMAINS_DIR, load_domain
+from bcc.errors import BccError
+from bcc.solvers import Budget, get_solver
+
+MATERIALS = ("log", "planks", "stick", "stone")
+
+
+def write(tmp_path, domain: str, goal: str = "true", stock=MATERIALS, counts=None) -> str:
+    """A one-row builder world on a domain of our own; `stock` lists the materials carried."""
+    (tmp_path / "d.yaml").write_text(textwrap.dedent(domain))
+    counts = counts or {}
+    lines = "".join(f"  - {{name: s_{m}, kind: {m}, count: {counts.get(m, 0)}}}\n" for m in stock)
+    (tmp_path / "w.yaml").write_text(
+        "dungeon: w\ndomain: d.yaml\nheight: 3\nlegend:\n  \".\": [bedrock]\n  \"L\": [bedrock, log]\n"
+        f"map: |\n  ..L\nagent: {{start: [0, 1, 0]}}\nstock:\n{lines}goal: {goal}\n")
+    return str(tmp_path / "w.yaml")
+
+
+RECIPES = """\
+domain: d
+extends: builder
+types:
+  material:
+    values:
+      stick: {id: 280}
+  recipe:
+    properties:
+      makes: {type: material, default: air}
+      count: 1
+      uses: {type: int, per: material, default: 0}
+    values:
+      planks: {makes: planks, count: 4, uses: {log: 1}}
+      stick: {makes: stick, count: 4, uses: {planks: 2}}
+actions:
+  craft:
+    params: {r: recipe}
+    pre:
+      - forall s in stock . s.count >= r.uses[s.kind]
+      - exists s in stock . s.kind == r.makes and s.count + r.count <= max_count
+    effect:
+      - forall s in stock where r.uses[s.kind] > 0 { s.count -= r.uses[s.kind] }
+      - first s in stock where s.kind == r.makes { s.count += r.count }
+"""
+
+
+def test_an_enumeration_parameter_grounds_the_schema_once_per_value(tmp_path):
+    model = compile_dungeon(write(tmp_path, RECIPES, "has(stick, 4)"))
+    assert [n for n in model.action_names if n.startswith("craft")] == ["craft(planks)", "craft(stick)"]
+    # break the log (1), planks from it (1), sticks from two planks (1), after walking to it (1)
+    result = get_solver("bfs")(model, Budget())
+    assert result.cost == 4 and result.plan[-2:] == ["craft(planks)", "craft(stick)"]
+
+
+def test_table_entries_fold_into_the_grounded_action(tmp_path):
+    model = compile_dungeon(write(tmp_path, RECIPES, "has(stick, 4)", counts={"planks": 3}))
+    craft = model.action_index("craft(stick)")
+    after = model.decode(model.apply(craft, model.initial))
+    assert after["s_planks.count"] == 1 and after["s_stick.count"] == 4
+    # `s.count >= r.uses[s.kind]` is `s.count >= 0` for the other stocks: folded away by the
+    # count's range, so craft(stick) has two preconditions left
+    assert len(model.pre_texts[craft]) == 2
+
+
+def test_a_combination_whose_preconditions_are_false_is_not_grounded(tmp_path):
+    # no stock of sticks: craft(stick) can never make one, so it is not an action at all
+    model = compile_dungeon(write(tmp_path, RECIPES, "has(planks, 4)", stock=("log", "planks")))
+    assert [n for n in model.action_names if n.startswith("craft")] == ["craft(planks)"]
+
+
+def test_a_table_indexed_by_a_run_time_row(tmp_path):
+    # the agent's chosen recipe is state: `uses` is read with a row known only at run time
+    domain = RECIPES + textwrap.indent(textwrap.dedent("""\
+    choose:
+      params: {c: chooser}
+      pre: c.pick == planks
+      effect: c.pick = stick
+    make_chosen:
+      params: {c: chooser}
+      pre: exists s in stock . s.count >= c.pick.uses[s.kind] and c.pick.uses[s.kind] > 0
+      effect: first s in stock where s.kind == c.pick.makes { s.count += 1 }
+    """), "  ") + textwrap.dedent("""\
+    classes:
+      chooser:
+        attributes:
+          pick: {type: recipe, default: planks}
+    dungeon:
+      lists:
+        choosers: {class: chooser, fields: {pick: pick}, required: []}
+    """)
+    path = write(tmp_path, domain, "has(stick, 1)", counts={"planks": 2})
+    text = open(path).read() + "choosers:\n  - {name: me}\n"
+    open(path, "w").write(text)
+    model = compile_dungeon(path)
+    make = model.action_index("make_chosen")
+    assert model.apply(make, model.initial) is None       # the planks recipe wants a log; none is carried
+    s = model.apply(model.action_index("choose"), model.initial)
+    assert model.is_goal(model.apply(make, s))            # stick recipe: 2 planks >= 2
+
+
+def test_an_extending_domain_sets_properties_of_a_base_value(tmp_path):
+    domain = RECIPES.replace("      stick: {id: 280}\n", "      stick: {id: 280}\n      stone: {breakable: false}\n")
+    model = compile_dungeon(write(tmp_path, domain, "true"))
+    assert model  # loads; stone keeps its id 1 and is no longer breakable by the builder's breaks
+    material = load_domain(tmp_path / "d.yaml").enums["material"]
+    i = material.values.index("stone")
+    assert material.ids[i] == 1 and material.properties["breakable"][i] is False
+
+
+# (text replaced, its replacement, where the error points (the first occurrence of this
+# text in the new file), the message)
+BAD_DATA = [
+    ("uses: {log: 1}", "uses: {logg: 1}", "logg",
+     "'logg' is not a value of 'material', which indexes the table recipe.uses (did you mean 'log'?)"),
+    ("uses: {log: 1}", "uses: {log: many}", "many", "property 'uses' must be an int, found 'many'"),
+    ("uses: {log: 1}", "uses: [log]", "[log]",
+     "property 'uses' is a table: a mapping from values of 'material' to int, e.g. {name: 1}"),
+    ("per: material,", "per: materials,", "materials",
+     "`per` names the enumeration that indexes the table; unknown type 'materials' (did you mean 'material'?)"),
+    ("default: air}", "default: aire}", "aire",
+     "property 'makes' must be a value of 'material', found 'aire' (did you mean 'air'?)"),
+    ("makes: planks,", "makes: plank,", "plank,",
+     "property 'makes' must be a value of 'material', found 'plank' (did you mean 'planks'?)"),
+    ("      stick: {id: 280}\n", "      stick: {id: 280}\n      stone: {id: 1}\n", "id: 1",
+     "'stone' is listed twice in 'material': it is the base domain's value, whose id stays; an extending "
+     "domain may set its properties only"),
+    ("params: {r: recipe}", "params: {r: recipes}", "recipes}",
+     "unknown type or class 'recipes' (did you mean 'recipe'?)"),
+]
+
+
+@pytest.mark.parametrize("old,new,marker,message", BAD_DATA)
+def test_bad_recipe_data_is_one_positioned_line_exit_2(tmp_path, old, new, marker, message):
+    assert old in RECIPES
+    text = RECIPES.replace(old, new, 1)
+    path = write(tmp_path, text)
+    before = text[:text.index(marker)]
+    line, col = before.count("\n") + 1, len(before) - before.rfind("\n")
+    result = CliRunner().invoke(main, ["compile", path], catch_exceptions=False)
+    assert result.exit_code == 2
+    assert result.stderr.strip().splitlines() == [f"{tmp_path / 'd.yaml'}:{line}:{col}: {message}"]
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(table=st.dictionaries(st.sampled_from(("log", "planks", "stick", "stone", "dirt", "sand")),
+                             st.integers(-5, 70), max_size=6),
+       default=st.integers(0, 3))
+def test_any_table_reads_back_its_entries_and_the_default(tmp_path, table, default):
+    """Whatever entries a table gives, `r.uses[m]` is the entry, else the declared default:
+    checked by one action per material that needs exactly that value."""
+    entries = "{" + ", ".join(f"{k}: {v}" for k, v in table.items()) + "}"
+    checks = "".join(f"  is_{m}:\n    params: {{r: recipe}}\n    pre: r.uses[{m}] == {table.get(m, default)}\n"
+                     f"    effect: agent.x = agent.x\n" for m in ("log", "planks", "stick", "stone", "dirt", "sand"))
+    domain = (f"domain: d\nextends: builder\ntypes:\n  material:\n    values:\n      stick: {{id: 280}}\n"
+              f"  recipe:\n    properties:\n      uses: {{type: int, per: material, default: {default}}}\n"
+              f"    values:\n      one: {{uses: {entries}}}\nactions:\n{checks}")
+    model = compile_dungeon(write(tmp_path, domain))
+    for m in ("log", "planks", "stick", "stone", "dirt", "sand"):
+        assert model.apply(model.action_index(f"is_{m}"), model.initial) is not None, m
+
+
+BUILDER_MATERIALS = set(load_domain(DOMAINS_DIR / "builder.yaml").enums["material"].values) | {"stick"}
+YAML_WORDS = {"y", "n", "yes", "no", "on", "off", "true", "false", "null"}
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(key=st.text(alphabet="abcdefghijklmnopqrstuvwxyz_", min_size=1, max_size=12)
+       .filter(lambda k: k not in BUILDER_MATERIALS and k not in YAML_WORDS),
+       pad=st.integers(0, 6))
+def test_an_unknown_table_key_is_reported_at_the_key(tmp_path, key, pad):
+    text = RECIPES.replace("uses: {log: 1}", "uses: {" + " " * pad + key + ": 1}", 1)
+    path = write(tmp_path, text)
+    with pytest.raises(BccError) as err:
+        compile_dungeon(path)
+    line = text.splitlines().index(next(l for l in text.splitlines() if key + ": 1}" in l)) + 1
+    col = text.splitlines()[line - 1].index("uses: {") + 8 + pad
+    assert (err.value.line, err.value.col) == (line, col) and key in err.value.message
