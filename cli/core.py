@@ -202,16 +202,26 @@ def validate_cmd(dungeon, plan, as_json, goal, task, time_limit, max_memory):
 
 @main.command("show")
 @click.argument("dungeon")
-@click.option("--plan", "plan", help="Replay this plan (file or -) and draw the agent's path.")
+@click.option("--plan", "plan", help="Replay this plan (file or -) and draw the agent's path and where it ends.")
+@click.option("--view", type=click.Choice(["auto", "top", "layers"]), default="auto", show_default=True,
+              help="top: from above, one character a column; layers: each level y of a 3D world, with a "
+                   "structure goal's progress; auto: layers when the goal has cell atoms or the agent "
+                   "changes level.")
+@click.option("--layer", "only", type=int, multiple=True, help="Draw only this level y (repeatable; with layers).")
 @json_option
 @goal_option
 @budget_options
-def show_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
-    """Draw DUNGEON from above (rows are z, columns x), optionally with a plan's path."""
-    from ..render import render
+def show_cmd(dungeon, plan, view, only, as_json, goal, time_limit, max_memory):
+    """Draw DUNGEON from above (rows are z, columns x) or layer by layer, optionally with a
+    plan's path and the state it ends in."""
+    from ..render import draws_layers, layer_view, render, render_layers
     from ..simulate import replay
     with within_budget(time_limit, max_memory, as_json, dungeon):
         model = compile_model(dungeon, goal)
+        bad = [y for y in only if not 0 <= y < model.grid.height]
+        if bad:
+            raise click.BadParameter(f"level {bad[0]} is outside the world (y = 0 .. {model.grid.height - 1})",
+                                     param_hint="--layer")
         state, path, note = model.initial, None, None
         if plan:
             actions, ppath = _read_plan_arg(plan)
@@ -220,13 +230,18 @@ def show_cmd(dungeon, plan, as_json, goal, time_limit, max_memory):
             state = result.states[-1]
             note = ("valid: " if result.valid else "invalid: ") + result.message
         picture = render(model, state, path)
+        layered = view == "layers" or view == "auto" and (draws_layers(model) or bool(only))
+        layers = layer_view(model, state, path, list(only)) if layered else None
     if as_json:
-        emit_json({"dungeon": model.name, "goal": model.goal_text, "rows": picture.splitlines(),
-                    "agent": list(model.agent_position(state)), "path": [list(p) for p in path or []],
-                    "plan_note": note})
+        out = {"dungeon": model.name, "goal": model.goal_text, "view": "layers" if layered else "top",
+               "rows": picture.splitlines(), "agent": list(model.agent_position(state)),
+               "path": [list(p) for p in path or []], "plan_note": note}
+        if layers is not None:
+            out.update(layers)
+        emit_json(out)
         return
     click.echo(f"{model.name}: goal {model.goal_text}")
-    click.echo(picture)
+    click.echo(render_layers(layers) if layered else picture)
     if note:
         click.echo(note)
 

@@ -436,4 +436,6 @@ def _display(d: Dungeon, layout) -> dict:
         pos = d.domain.classes[cls].position
         if name != d.agent_name and len(pos) == 3:
             objects.append((name, values.get(pos[0]), values.get(pos[2])))
-    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default, "objects": objects}
+    chars = dict(d.structure.chars) if d.structure is not None else {}   # a blueprint's own legend
+    return {"glyphs": glyphs, "facing": facing, "default": layout.grid_default, "objects": objects,
+            "value_chars": chars}

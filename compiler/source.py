@@ -121,13 +121,14 @@ _PLAIN_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("str", "int", "bool", "null", 
 _SURROGATE = re.compile("[\ud800-\udfff]")
 
 
+@dataclass(slots=True)
 class _Alias:
     """Where a `*name` alias is used (PyYAML's composer returns the anchored node itself,
-    losing the place): lets loops and alias bombs be reported at the alias."""
-    __slots__ = ("node", "start_mark")
-
-    def __init__(self, node: yaml.Node, start_mark):
-        self.node, self.start_mark = node, start_mark
+    losing the place): lets loops and alias bombs be reported at the alias. A data class,
+    so the on-disk cache may rebuild a domain that uses aliases (cache.py builds only data
+    classes)."""
+    node: yaml.Node
+    start_mark: object
 
 
 class _Loader(yaml.SafeLoader):

@@ -20,7 +20,7 @@ rest of the compiler, the heuristics and the solvers see an ordinary goal.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from . import ast
 from .source import YList, YMap, check_keys, error_at
@@ -32,6 +32,7 @@ KEYS = {"at", "legend", "layers"}
 class Blueprint:
     at: tuple                 # the anchor: where layer 0, row 0, column 0 sits
     cells: dict               # (x, y, z) -> value name, in the world's coordinates
+    chars: dict = field(default_factory=dict)   # value name -> its legend character (for drawing)
 
     def summary(self) -> dict:
         """What `bcc compile --json` reports of it."""
@@ -93,7 +94,7 @@ def read_blueprint(holder: YMap, values: tuple, size: tuple) -> Blueprint:
                 cells[(x, y, z)] = chars[ch]
     if not cells:
         raise error_at(spec, "layers", "the structure has no cell: every character is a space")
-    return Blueprint(tuple(at), cells)
+    return Blueprint(tuple(at), cells, {name: ch for ch, name in reversed(chars.items())})
 
 
 def goal_node(blueprint: Blueprint, grid_class: str, value_attr: str):

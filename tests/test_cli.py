@@ -147,7 +147,7 @@ def test_show_draws_agent_and_path(tmp_path):
 def test_list_and_solvers():
     data = json.loads(run("list", "--json").stdout)
     assert set(REFERENCE) <= {d["name"] for d in data["dungeons"]}
-    assert data["domains"] == ["builder", "cleanup", "farm", "mason", "mason_tasks", "minecraft"]
+    assert data["domains"] == ["builder", "cleanup", "crafting", "farm", "mason", "mason_tasks", "minecraft"]
     assert {"bfs", "astar"} <= set(json.loads(run("solvers", "--json").stdout)["solvers"])
 
 

@@ -41,7 +41,7 @@ DOCS = ROOT / "docs"
 GRAMMAR = ROOT / "grammar" / "expressions.lark"
 REFERENCE = DOCS / "reference.md"
 PAGES = ["first-dungeon.md", "object-class.md", "add-a-solver.md", "grounding.md", "batch.md", "pddl.md", "hddl.md",
-         "learning-curves.md", "add-a-heuristic.md"]
+         "learning-curves.md", "add-a-heuristic.md", "crafting.md"]
 IN_CHECKOUT = {"add-a-heuristic.md"}   # pages that change bcc's own files: followed in a copy of the checkout
 NEEDS = {"learning-curves.md": "matplotlib"}  # pages whose commands need an optional extra: page -> the module it brings
 
