@@ -227,7 +227,9 @@ def test_crafting_wall_is_solved_and_replays_through_the_cli(tmp_path):
     solved = CliRunner().invoke(main, ["solve", "crafting_wall", "--json"], catch_exceptions=False)
     assert solved.exit_code == 0
     result = json.loads(solved.stdout)
-    assert result["solver"] == "build" and result["cost"] >= 26   # 12 as above, a second stone, 2 placed, walks
+    # at least crafting_bench's 11 actions, a second stone mined and two blocks placed (14),
+    # and a move: no stone is in front of the start
+    assert result["solver"] == "build" and result["cost"] >= 15
     plan = tmp_path / "plan.txt"
     plan.write_text("\n".join(result["plan"]) + "\n")
     valid = CliRunner().invoke(main, ["validate", "crafting_wall", str(plan)], catch_exceptions=False)
