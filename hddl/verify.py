@@ -21,7 +21,7 @@ solution to a totally ordered HTN problem:
 """
 from __future__ import annotations
 
-from ..pddl_io.lifted import is_a
+from ..pddl_io.lifted_types import is_a
 
 
 class Invalid(Exception):

@@ -23,8 +23,7 @@ from __future__ import annotations
 import itertools
 from collections import deque
 
-from ..pddl_io.lifted import TRUE
-from ..pddl_io.lifted import conjuncts
+from ..pddl_io.lifted_types import TRUE, conjuncts
 from ..pddl_io.lifted_states import LiftedTask, free_vars, substitute
 
 SMALL_TYPE = 4          # a variable left free is taken over its type's objects if it has this many or fewer

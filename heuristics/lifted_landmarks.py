@@ -18,8 +18,7 @@ The search counts a missing landmark as 1, plus 1 while its need is missing too.
 """
 from __future__ import annotations
 
-from ..pddl_io.lifted import TRUE
-from ..pddl_io.lifted import conjuncts
+from ..pddl_io.lifted_types import TRUE, conjuncts
 from ..pddl_io.lifted_states import LiftedTask, free_vars, substitute
 
 

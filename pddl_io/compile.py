@@ -13,7 +13,7 @@ import functools
 
 from .bits import BitEmitter, atom_shares
 from .ground import GroundTask
-from .lifted import conjuncts
+from .lifted_types import conjuncts
 
 
 def formula_text(f, task: GroundTask) -> str:

@@ -26,7 +26,7 @@ from collections import defaultdict
 from dataclasses import dataclass, field
 
 from ..errors import BccError
-from .lifted import FALSE, TRUE, Domain, Problem, conjuncts, is_a
+from .lifted_types import FALSE, TRUE, Domain, Problem, conjuncts, is_a
 
 
 @dataclass

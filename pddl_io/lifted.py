@@ -10,27 +10,19 @@ use of one is replaced by its definition (the `or` of its rules, their quantifie
 variables renamed apart), so grounding and search never meet them. Anything else stops
 at its position with "... is not supported" (a recursive derived predicate too).
 
-Formulas are tuples: ("atom", pred, args), ("=", a, b), ("not", f), ("and", fs),
-("or", fs), ("exists", params, f), ("forall", params, f), ("true",), ("false",). A term
-is a variable "?x" or an object name; `params` is a tuple of (variable, types).
+The task's types and formulas are in lifted_types.py, derived predicates in derived.py.
 """
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 
 from ..errors import BccError
+from .derived import check_derived, inline_derived
+from .lifted_types import (FALSE, TRUE, Action, Domain, Effect, Problem, conjuncts, err,  # noqa: F401 - the lifted task's
+                           is_a, unsupported)                                             # types, read from here too
 from .read import SList, read_sexpr
 
-TRUE, FALSE = ("true",), ("false",)
-
-
-def conjuncts(f) -> list:
-    """The conjuncts of a formula (lifted, or ground: an atom is its number), nested `and`s
-    flattened, `true` dropped."""
-    if isinstance(f, tuple) and f[0] == "and":
-        return [g for sub in f[1] for g in conjuncts(sub)]
-    return [] if f == TRUE else [f]
 KNOWN_REQUIREMENTS = {
     ":strips", ":typing", ":negative-preconditions", ":disjunctive-preconditions", ":equality",
     ":existential-preconditions", ":universal-preconditions", ":quantified-preconditions",
@@ -42,61 +34,6 @@ KNOWN_REQUIREMENTS = {
     ":subgoal-through-axioms", ":safety-constraints", ":expression-evaluation", ":open-world",
     ":true-negation", ":ucpop",
 }
-
-
-@dataclass(frozen=True)
-class Effect:
-    """`(forall params (when cond (not? (pred args))))`, flattened."""
-    params: tuple
-    cond: tuple
-    add: bool
-    pred: str
-    args: tuple
-
-
-@dataclass
-class Action:
-    name: str
-    params: tuple            # ((variable, frozenset of types), ...)
-    pre: tuple               # formula
-    effects: list            # [Effect]
-    cost: object             # None, an int, or (function, args) read from the problem's :init
-    where: tuple             # (line, column) of the action
-
-
-@dataclass
-class Domain:
-    name: str
-    path: str
-    parents: dict            # type -> its parent types (`either` gives several); "object" has none
-    constants: dict          # name -> type
-    predicates: dict         # name -> tuple of parameter types (frozensets)
-    functions: dict          # name -> tuple of parameter types (only static cost functions)
-    actions: list
-    uses_costs: bool = False
-    loose_names: dict = field(default_factory=dict)  # names actions use without declaring them: name -> token
-    derived: dict = field(default_factory=dict)      # derived predicate -> [(params, formula), ...] (its rules)
-
-
-@dataclass
-class Problem:
-    name: str
-    path: str
-    objects: dict            # name -> type (the domain's constants included)
-    init: set                # ground atoms (pred, args)
-    function_values: dict    # (function, args) -> int
-    goal: tuple
-    metric: bool             # (:metric minimize (total-cost))
-    where: dict = field(default_factory=dict)
-    init_order: list | None = None   # the :init atoms in file order, when asked for (HDDL's planner)
-
-
-def err(node, message: str, path: str) -> BccError:
-    return BccError(message, path, getattr(node, "line", None), getattr(node, "column", None))
-
-
-def unsupported(node, what: str, path: str) -> BccError:
-    return err(node, f"{what} is not supported", path)
 
 
 class Reader:
@@ -241,7 +178,7 @@ def domain_from(d: SList, path: str, requirements: frozenset = frozenset()) -> D
             raise BccError(f"action {a.name!r} is declared twice", path, *a.where)
         seen.add(a.name)
     if dom.derived:
-        _check_derived(dom, where, path)
+        check_derived(dom, where, path)
         fresh = itertools.count()
         for a in dom.actions:
             scope = dict(a.params)
@@ -265,93 +202,6 @@ def _derived(r: Reader, sec: SList, dom: Domain) -> str:
     body = Formulas(r, dom, None).formula(sec[2], dict(params))
     dom.derived.setdefault(name, []).append((params, body))
     return name
-
-
-def _check_derived(dom: Domain, where: dict, path: str) -> None:
-    """No action may change a derived predicate, and none may depend on itself."""
-    for a in dom.actions:
-        for e in a.effects:
-            if e.pred in dom.derived:
-                raise BccError(f"action {a.name!r} changes {e.pred!r}, a derived predicate", path, *a.where)
-    uses = {name: {p for _, body in rules for p in _predicates_in(body) if p in dom.derived}
-            for name, rules in dom.derived.items()}
-    for name in uses:
-        todo, seen = list(uses[name]), set()
-        while todo:
-            p = todo.pop()
-            if p == name:
-                raise unsupported(where[name], f"a recursive derived predicate ({name!r} depends on itself)", path)
-            if p not in seen:
-                seen.add(p)
-                todo.extend(uses[p])
-
-
-def _predicates_in(f) -> set:
-    kind = f[0]
-    if kind == "atom":
-        return {f[1]}
-    if kind in ("and", "or"):
-        return set().union(*(_predicates_in(g) for g in f[1]))
-    if kind == "not":
-        return _predicates_in(f[1])
-    if kind in ("exists", "forall"):
-        return _predicates_in(f[2])
-    return set()
-
-
-def inline_derived(f, dom: Domain, fresh, scope: dict, objects: dict):
-    """`f` with each atom of a derived predicate replaced by the `or` of its rules'
-    conditions, the rule's parameters bound to the atom's terms (definitions do not
-    depend on themselves: _check_derived). `scope` gives the variables' types, `objects`
-    the objects': a term whose type the rule's parameter may not include gets a test
-    that it does (`exists ?t - T (= ?t term)`), as the typed axiom would."""
-    kind = f[0]
-    if kind == "atom" and f[1] in dom.derived:
-        parts = []
-        for params, body in dom.derived[f[1]]:
-            tests = [_type_test(term, want, dom, fresh, scope, objects) for (_, want), term in zip(params, f[2])]
-            bound = _bind(body, dict(zip((v for v, _ in params), f[2])), fresh)
-            tests = [t for t in tests if t is not None]
-            parts.append(inline_derived(("and", (*tests, bound)) if tests else bound, dom, fresh, scope, objects))
-        return parts[0] if len(parts) == 1 else ("or", tuple(parts))
-    if kind in ("and", "or"):
-        return (kind, tuple(inline_derived(g, dom, fresh, scope, objects) for g in f[1]))
-    if kind == "not":
-        return ("not", inline_derived(f[1], dom, fresh, scope, objects))
-    if kind in ("exists", "forall"):
-        return (kind, f[1], inline_derived(f[2], dom, fresh, {**scope, **dict(f[1])}, objects))
-    return f
-
-
-def _type_test(term: str, want: frozenset, dom: Domain, fresh, scope: dict, objects: dict):
-    """None where `term` is of a type in `want` whatever it stands for; else the test."""
-    have = scope.get(term) if term.startswith("?") else \
-        (frozenset({objects[term]}) if term in objects else None)
-    if have is not None and all(any(is_a(t, w, dom.parents) for w in want) for t in have):
-        return None
-    v = f"?type~{next(fresh)}"
-    return ("exists", ((v, want),), ("=", v, term))
-
-
-def _bind(f, env: dict, fresh):
-    """A rule's condition with its parameters replaced by terms (`env`) and its quantified
-    variables renamed apart (`?x~7`), so that none captures a variable of the place it
-    is used in."""
-    kind = f[0]
-    if kind == "atom":
-        return ("atom", f[1], tuple(env.get(t, t) for t in f[2]))
-    if kind == "=":
-        return ("=", env.get(f[1], f[1]), env.get(f[2], f[2]))
-    if kind in ("and", "or"):
-        return (kind, tuple(_bind(g, env, fresh) for g in f[1]))
-    if kind == "not":
-        return ("not", _bind(f[1], env, fresh))
-    if kind in ("exists", "forall"):
-        renamed = tuple((f"{v}~{next(fresh)}", t) for v, t in f[1])
-        inner = dict(env)
-        inner.update((v, new) for (v, _), (new, _) in zip(f[1], renamed))
-        return (kind, renamed, _bind(f[2], inner, fresh))
-    return f
 
 
 def _check_acyclic(parents: dict, node, path: str):
@@ -674,13 +524,6 @@ def _function_value(r: Reader, f: Formulas, fact: SList, prob: Problem, dom: Dom
     if "." in value or value.startswith("-"):
         raise unsupported(value, f"the cost {str(value)} (costs are whole numbers >= 0)", r.path)
     prob.function_values[(name, args)] = int(value)
-
-
-def is_a(t: str, want: str, parents: dict) -> bool:
-    """Is type `t` (or one of its ancestors) `want`?"""
-    if want == "object" or t == want:
-        return True
-    return any(is_a(p, want, parents) for p in parents.get(t, ()))
 
 
 def read_task(domain_path: str, problem_path: str) -> tuple[Domain, Problem]:

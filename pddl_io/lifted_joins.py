@@ -16,7 +16,7 @@ the problem's, lowercased by the reader.
 """
 from __future__ import annotations
 
-from .lifted import conjuncts
+from .lifted_types import conjuncts
 from .lifted_states import LiftedTask, free_vars
 
 

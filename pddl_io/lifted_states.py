@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 
-from .lifted import Domain, Problem, is_a
+from .lifted_types import Domain, Problem, is_a
 
 
 def _is_var(t: str) -> bool:

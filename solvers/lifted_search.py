@@ -22,7 +22,7 @@ import heapq
 import itertools
 
 from .base import Budget, Meter, Result, budget_result
-from ..pddl_io.lifted import TRUE, Domain, Problem
+from ..pddl_io.lifted_types import TRUE, Domain, Problem
 from ..pddl_io.lifted_joins import JoinCompiler
 from ..heuristics.lifted_distances import Distances
 from ..heuristics.lifted_landmarks import landmarks

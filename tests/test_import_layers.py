@@ -76,6 +76,8 @@ LAYER_OF = {
     "bcc.pddl_io": "front end",            # the package docstring
     "bcc.pddl_io.read": "front end",
     "bcc.pddl_io.lifted": "front end",
+    "bcc.pddl_io.lifted_types": "front end",  # the lifted task's formulas, actions, domain and problem
+    "bcc.pddl_io.derived": "front end",       # derived predicates inlined
     "bcc.pddl_io.ground": "front end",
     "bcc.hddl": "front end",               # HTN domains and problems (IPC HDDL), plans and their check
     # back end: the ground task laid out as states, successor code generated -> Model
