@@ -32,6 +32,7 @@ GATHER_LIMIT = 100_000   # states a walk to a supply may visit (positions, in ef
 SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_UP_TO = 40       # plans this short are handed to A* for a shorter one
 IMPROVE_STATES = 100_000
+IMPROVE_MB = 400         # the process's memory at which A*'s try stops
 RETRY = 8          # atoms achieved before a set-aside atom is tried again
 
 
@@ -431,8 +432,8 @@ class _Builder:
 
 
 @declare(Option("local_limit", int, 4000, "expansions of one atom's greedy search before it is set aside", low=1),
-         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to A* (a quarter of the time "
-                "left, at most 100,000 states) for a shorter one; 0: never", low=0))
+         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to blind A* (a quarter of the time "
+                "left, at most 100,000 states and 400 MB) for a shorter one; 0: never", low=0))
 def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve: int = IMPROVE_UP_TO,
           **options) -> Result:
     """Builds a goal of many cell atoms one atom at a time (satisficing), reporting a lower bound."""
@@ -465,8 +466,9 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
         actions = eliminate(model, actions, lambda: budget.time_limit is not None and meter.elapsed() > budget.time_limit)
     if 0 < len(actions) <= improve:   # short: an optimal search may finish and find a shorter plan
         left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed()) / 4
-        mem = budget.max_memory_mb if budget.max_memory_mb is None else budget.max_memory_mb / 2
-        better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem))
+        mem = min(IMPROVE_MB, budget.max_memory_mb / 2) if budget.max_memory_mb else IMPROVE_MB
+        better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem),
+                                        heuristic="blind")
         for k in stats:
             stats[k] += getattr(better, k) or 0
         if better.solved and better.cost < sum(model.action_costs[a] for a in actions):
