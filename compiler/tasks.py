@@ -110,7 +110,7 @@ def _load_method(section, name, names_in_use, read) -> MethodDef:
     if pre is None:
         pres = []
     elif isinstance(pre, YList):
-        pres = [_expr(pre, i) for i in range(len(pre))]
+        pres = [_flow_hinted(_expr, pre, i) for i in range(len(pre))]
     else:
         pres = [_expr(mdef, "pre")]
     subs = mdef["subtasks"]
@@ -120,19 +120,24 @@ def _load_method(section, name, names_in_use, read) -> MethodDef:
         raise error_at(mdef, "subtasks", "`subtasks` is a list of calls, e.g. [move_east(agent), row(n - 1)]; "
                                          "[] for none")
     calls = []
-    flow = getattr(getattr(subs, "node", None), "flow_style", False)
     for i in range(len(subs)):
-        try:
-            e = _expr(subs, i)
-        except BccError as exc:
-            if flow:   # YAML splits `[row(a, b)]` at its comma, before bcc sees it
-                exc.message += "; in a [flow, list] YAML splits calls at their commas: write one `- call` a line"
-            raise
+        e = _flow_hinted(_expr, subs, i)
         if not isinstance(e.node, ast.Call):
             raise e.error("a subtask is a call of a task or an action, e.g. row(x + 1, n - 1) or move_east(agent)")
         calls.append(e)
     task_where = (mdef.src_of("task").path, *node_pos(value_node(mdef, "task")))
     return MethodDef(name, task, vars_, pres, calls, _where(section, name), task_where)
+
+
+def _flow_hinted(_expr, items: YList, i: int):
+    """items[i] parsed; a syntax error in a `[flow, list]` says why it may be one: YAML splits
+    `[row(a, b)]` at its comma before bcc sees it."""
+    try:
+        return _expr(items, i)
+    except BccError as exc:
+        if getattr(getattr(items, "node", None), "flow_style", False):
+            exc.message += "; in a [flow, list] YAML splits calls at their commas: write one `- item` a line"
+        raise
 
 
 def check_hierarchy(tasks: dict, methods: dict, actions: dict, functions: dict, data: YMap) -> None:

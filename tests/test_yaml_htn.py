@@ -163,6 +163,7 @@ LOAD_ERRORS = [
     ("tasks:\n  t: {params: {n: int}}\nmethods:\n  m: {task: t, vars: {n: int}, subtasks: []}\n", 4,
      "already a parameter"),
     ("tasks:\n  t: {}\nmethods:\n  m: {task: t, subtasks: [step(1, 2)]}\n", 4, "YAML splits calls"),
+    ("tasks:\n  t: {}\nmethods:\n  m: {task: t, pre: [free(1, 2, 3)], subtasks: []}\n", 4, "YAML splits calls"),
     ("tasks:\n  t: {}\nmethods:\n  m: {task: t, subtasks: [1 + 2]}\n", 4, "a subtask is a call"),
     ("tasks:\n  t: {params: {n: integer}}\n", 2, "unknown type or class 'integer'"),
     ("tasks:\n  t: {}\nmethods:\n  m: {task: t, subtask: []}\n", 4, "unknown key 'subtask'"),
