@@ -20,6 +20,7 @@ MAX_GENERATED_NESTING = 90            # preconditions + nested conditional effec
 MAX_GROUND_EFFECTS = 100_000          # effect nodes grounded for one dungeon (nested first/forall multiply)
 MAX_GRID_CELLS = 2**24                # cells of the grid (x * y * z)
 MAX_KEYED_OBJECTS = 65_536            # objects of another keyed class (inventory slots, ...)
+MAX_METHOD_VARS = 16                  # a method's own variables (each a loop or an assignment in its code)
 # The length of names is the names rule's (names.MAX_NAME), for names in expressions too.
 
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from ..errors import BccError
 from . import ast
+from .limits import MAX_METHOD_VARS
 from .source import YList, YMap, check_keys, error_at, node_pos, suggest, value_node
 
 TASK_KEYS = {"params", "description", "override"}
@@ -90,6 +91,8 @@ def _load_method(section, name, names_in_use, read) -> MethodDef:
     section_vars = mdef.get("vars") or YMap()
     if not isinstance(section_vars, YMap):
         raise error_at(mdef, "vars", "`vars` maps variable names to types, e.g. {s: stock, d: {type: int, range: [0, 3]}}")
+    if len(section_vars) > MAX_METHOD_VARS:
+        raise error_at(mdef, "vars", f"method {name!r} has {len(section_vars)} variables; at most {MAX_METHOD_VARS}")
     for vname, vtype in section_vars.items():
         read.ident(section_vars, vname, vname, "a variable name")
         rng = None

@@ -167,6 +167,8 @@ LOAD_ERRORS = [
     ("tasks:\n  t: {}\nmethods:\n  m: {task: t, subtasks: [1 + 2]}\n", 4, "a subtask is a call"),
     ("tasks:\n  t: {params: {n: integer}}\n", 2, "unknown type or class 'integer'"),
     ("tasks:\n  t: {}\nmethods:\n  m: {task: t, subtask: []}\n", 4, "unknown key 'subtask'"),
+    ("tasks:\n  t: {}\nmethods:\n  m: {task: t, subtasks: [], vars: {" + ", ".join(f"v{i}: bool" for i in range(17))
+     + "}}\n", 4, "17 variables; at most 16"),
 ]
 
 
