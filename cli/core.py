@@ -253,10 +253,11 @@ def list_cmd(as_json):
     from ..compiler.domain import DOMAINS_DIR
     from ..compiler.dungeon import DUNGEONS_DIR, shipped_dungeons
     from ..compiler.source import load_yaml
+    from ..compiler.structure import listed_goal
     dungeons = []
     for name in shipped_dungeons():
         data = load_yaml(DUNGEONS_DIR / f"{name}.yaml")
-        dungeons.append({"name": name, "goal": data.get("goal"), "extends": data.get("extends"),
+        dungeons.append({"name": name, "goal": listed_goal(data.get("goal")), "extends": data.get("extends"),
                          "description": " ".join(str(data.get("description", "")).split())})
     domains = sorted(p.stem for p in DOMAINS_DIR.glob("*.yaml"))
     if as_json:

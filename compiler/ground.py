@@ -78,10 +78,17 @@ class Grounder:
         self.depth = 0  # of `expr` calls in progress: bounds the nesting of the code emitted
         self.writes: list = []  # (class, attr) or ("<grid>", y IR), recorded by effects
         self.effect_work = 0    # effect nodes grounded so far: bounds what nested first/forall multiply
+        self.ranges: dict = {}  # (class, attribute) -> its range, once grounded
         self.key_ranges = {c.name: self._key_ranges(c) for c in self.dom.classes.values() if c.key}
 
     # ---- helpers ---------------------------------------------------------------------
     def attr_range(self, cls: ClassDef, attr: str) -> tuple[int, int] | None:
+        key = (cls.name, attr)
+        if key not in self.ranges:   # its bounds are constant expressions: grounded once
+            self.ranges[key] = self._attr_range(cls, attr)
+        return self.ranges[key]
+
+    def _attr_range(self, cls: ClassDef, attr: str) -> tuple[int, int] | None:
         adef = cls.attrs[attr]
         if adef.type == "bool":
             return (0, 1)
@@ -368,14 +375,16 @@ class Grounder:
 
     def x_Compare(self, node, ctx, hint):
         values = []
-        first = None
-        for operand in node.operands:
+        first, k = None, 0
+        for i, operand in enumerate(node.operands):
             v = self.expr(operand, ctx, hint=first)
             if first is None and self.type_of(v) in self.dom.enums:
-                first = self.type_of(v)
+                first, k = self.type_of(v), i
             values.append(v)
         if first is not None:  # resolve bare value names against the left operand's type
-            values = [self.expr(o, ctx, hint=first) for o in node.operands]
+            # (only a name reads the hint; operands after the k-th were given it already)
+            values = [self.expr(o, ctx, hint=first) if i <= k and isinstance(o, ast.Name) else v
+                      for i, (o, v) in enumerate(zip(node.operands, values))]
         for op, (ln, lv), (rn, rv) in zip(node.ops, zip(node.operands, values), zip(node.operands[1:], values[1:])):
             lt, rt = self.type_of(lv), self.type_of(rv)
             if isinstance(lv, (ObjRef, KeyRef, ClassName, Table)) or isinstance(rv, (ObjRef, KeyRef, ClassName, Table)):

@@ -50,6 +50,23 @@ def is_structure(node) -> bool:
     return isinstance(node, YMap) and "structure" in node
 
 
+def listed_goal(goal) -> str | None:
+    """A dungeon file's `goal:` as one line of text for a listing (`bcc list`, the server's
+    /dungeons), read without compiling: an expression as written, a list of them joined
+    with `and`, a blueprint as its cell count and anchor."""
+    if goal is None or isinstance(goal, str):
+        return goal
+    if isinstance(goal, list):
+        return " and ".join(f"({g})" for g in goal)
+    if isinstance(goal, dict) and isinstance(goal.get("structure"), dict):
+        spec = goal["structure"]
+        layers = spec.get("layers") if isinstance(spec.get("layers"), list) else []
+        cells = sum(len(row.rstrip()) - row.rstrip().count(" ") for layer in layers if isinstance(layer, str)
+                    for row in layer.split("\n"))
+        return f"structure of {cells} cells at {list(spec.get('at') or [])}"
+    return str(goal)
+
+
 def read_blueprint(holder: YMap, values: tuple, size: tuple) -> Blueprint:
     """The blueprint of `holder` (a mapping with `structure:`), checked against the grid's
     value names and its size (width, height, depth); errors point into the file."""

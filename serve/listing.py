@@ -4,10 +4,11 @@ from __future__ import annotations
 from ..compiler.domain import DOMAINS_DIR
 from ..compiler.dungeon import DUNGEONS_DIR, shipped_dungeons
 from ..compiler.source import load_yaml
+from ..compiler.structure import listed_goal
 
 
 def _info(name: str, data) -> dict:
-    return {"name": name, "goal": data.get("goal"), "extends": data.get("extends"),
+    return {"name": name, "goal": listed_goal(data.get("goal")), "extends": data.get("extends"),
             "description": " ".join(str(data.get("description", "")).split())}
 
 

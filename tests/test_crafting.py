@@ -284,3 +284,9 @@ def test_smelting_needs_the_furnace_next_to_the_agent(tmp_path):
     assert model.apply(model.action_index("smelt(stone)"), model.initial) is None
     result = get_solver("bfs")(model, Budget(time_limit=60))
     assert result.cost == 3 and result.plan[0].startswith("place_") and result.plan[1:] == ["smelt(stone)"] * 2
+
+
+def test_a_blueprint_goal_is_listed_as_one_line():
+    listed = json.loads(CliRunner().invoke(main, ["list", "--json"]).stdout)
+    goals = {d["name"]: d["goal"] for d in listed["dungeons"]}
+    assert goals["crafting_wall"] == "structure of 2 cells at [1, 1, 3]" and goals["crafting_bench"] == "has(cobblestone, 1)"
