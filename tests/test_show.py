@@ -72,3 +72,11 @@ def test_a_flat_world_keeps_the_top_view():
     out = json.loads(run("show", "bridge", "--json").stdout)
     assert out["view"] == "top" and "layers" not in out and out["rows"][1] == "#..L..#"
     assert run("show", "bridge").stdout.splitlines()[1] == "#######"
+
+
+def test_a_world_whose_agent_changes_level_is_drawn_in_layers():
+    # crafting_bench: no cell atom in its goal, but the mason's agent climbs: layers
+    out = json.loads(run("show", "crafting_bench", "--json").stdout)
+    assert out["view"] == "layers" and [layer["y"] for layer in out["layers"]] == [0, 1, 2]
+    assert out["layers"][1]["rows"] == ["bbbbb", "bl@lb", "b.lsb", "bbbbb"]
+    assert {k: out["goal_cells"][k] for k in ("done", "pending", "wrong")} == {"done": 0, "pending": 0, "wrong": 0}
