@@ -41,38 +41,28 @@ def optimal_cost(model, budget: Budget | None = None) -> int | None:
     return reference.cost if reference.solved else None
 
 
-STRUCTURE_ATOMS = 10   # cell atoms from which a goal counts as a structure
-
-
 def default_solver(model) -> str:
     """`bcc solve`'s choice when no --solver is given: `htn` when the dungeon gives a task
-    (its `task:`, or --task); else `build` for a structure goal (a blueprint, or a
-    conjunction of at least STRUCTURE_ATOMS cell atoms), for a goal with at least two cell
-    atoms to write or one that nothing can write before something else is built (what it
-    rests on is missing), and for a goal that needs something gathered first (a cell atom or an
-    amount the goal asks for takes a supply the agent lacks at the start,
-    heuristics/supplies.py); else `astar`. The one place this rule lives
-    (docs/structures.md states it)."""
-    from ..heuristics.goal_cells import CellReader, goal_cells, ready
+    (its `task:`, or --task); else `build` for a goal with a cell atom to write (a
+    blueprint, a conjunction of cell atoms, or one cell atom) or an amount to gather (a
+    goal such as `5 <= v` the start does not meet, heuristics/supplies.py); else `astar`.
+    The one place this rule lives (docs/structures.md states it)."""
+    from ..heuristics.goal_cells import CellReader, goal_cells
     from ..heuristics.supplies import supplies, wanted
     if model.report.get("task"):
         return "htn"
     if model.report.get("structure"):
         return "build"
     cells = goal_cells(model)
-    if cells is not None and len(cells.atoms) >= STRUCTURE_ATOMS:
-        return "build"
     amounts = wanted(model)
     if cells is None and amounts:
         cells = goal_cells(model, allow_empty=True)
     if cells is None:
         return "astar"
     read = CellReader(model)
-    todo = [(p, v) for p, v in cells.atoms if read(model.initial, *p) != v]
+    todo = [v for p, v in cells.atoms if read(model.initial, *p) != v]
     sup = supplies(model, cells)
-    short = sup.short(model.initial, [v for _, v in todo], amounts) if sup else {}
-    unready = any(not ready(cells, read, model.initial, atom) for atom in todo)
-    return "build" if len(todo) >= 2 or short or unready else "astar"
+    return "build" if todo or (sup and sup.short(model.initial, (), amounts)) else "astar"
 
 
 def _plugins() -> dict:

@@ -76,11 +76,12 @@ def test_lower_bound_is_below_the_optimum():
     assert 3 <= bound <= optimum.cost     # at least one action per stone to place
 
 
-def test_solve_picks_build_for_structures_only():
+def test_solve_picks_build_for_cells_to_write():
     assert default_solver(compile_dungeon(str(HERE / "steps.yaml"))) == "build"
     assert default_solver(compile_dungeon("bridge")) == "astar"
-    # a plain conjunction of fewer than 10 cell atoms is no structure
-    assert default_solver(compile_dungeon(str(HERE / "steps.yaml"), goal="block[2, 1, 1].kind == stone")) == "astar"
+    # one cell atom to write is built too; one that already holds is no work for build
+    assert default_solver(compile_dungeon(str(HERE / "steps.yaml"), goal="block[2, 1, 1].kind == stone")) == "build"
+    assert default_solver(compile_dungeon(str(HERE / "steps.yaml"), goal="block[2, 1, 1].kind == air")) == "astar"
 
 
 def test_cli_generate_solve_validate(tmp_path):
