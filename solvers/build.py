@@ -73,6 +73,9 @@ class _Builder:
         # walks may also clear a cell on the way (take a scaffold down), never fill one
         clear = model.grid.default
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
+        # actions that clear a cell without moving: a gathering walk may use them when blocked in
+        self.clearers = sorted({a.action for a in cells.achievers.get(clear, ()) if not a.moves})
+        self.clear_set = set(self.clearers)
         self.supplies = supplies(model, cells)
         self.wanted = wanted(model)    # variables the goal wants at or above a value
         self.keep = set()              # footing built for the atom in hand (solvers/scaffold.py)
@@ -91,13 +94,14 @@ class _Builder:
                 place = (pos[0] - a.write[0], pos[1] - a.write[1], pos[2] - a.write[2])
                 self.by_place.setdefault(place, []).append((pos, a.action))
 
-    def walk(self, state, finish, limit):
+    def walk(self, state, finish, limit, keep=None):
         """Breadth-first over the actions that write no cell, to the nearest state where
         `finish(s)` gives the last steps [(action, state)] (reversed; e.g. an achiever that
         writes an eligible atom): the whole path [(action, state)], or None."""
         apply, agent, base = self.model.apply_fns, self.model.agent_position, self.read.base
         parents = {state: None}
-        seen = {(agent(state), state[base:])}   # a place and the cells: what else a walk changes
+        where = (lambda n: agent(n)) if keep is not None else (lambda n: (agent(n), n[base:]))
+        seen = {where(state)}                   # a place and the cells: what else a walk changes
         frontier = [state]                      # (things picked up) does not make a new place
         while frontier and len(parents) <= limit:
             nxt = []
@@ -124,7 +128,9 @@ class _Builder:
                     self.generated += 1
                     if n is None or n in parents or self.model.is_failure(n) or self.breaks_protected(s, a, n):
                         continue
-                    key = (agent(n), n[base:])
+                    if keep is not None and self._writes_into(s, a, keep):
+                        continue
+                    key = where(n) if keep is None or a not in self.clear_set else (agent(n), n[base:])
                     if key in seen:
                         continue
                     seen.add(key)
@@ -132,6 +138,13 @@ class _Builder:
                     nxt.append(n)
             frontier = nxt
         return None
+
+    def _writes_into(self, state, action, cells) -> bool:
+        offs = self.writes.get(action, ())
+        if not offs:
+            return offs is None
+        x, y, z = self.model.agent_position(state)
+        return any((x + dx, y + dy, z + dz) in cells for dx, dy, dz in offs)
 
     def breaks_protected(self, state, action, nxt) -> bool:
         offs = self.writes.get(action, ())
@@ -271,6 +284,14 @@ class _Builder:
         path = self.walk(state, finish, GATHER_LIMIT)
         if path:
             return path, "ok"
+        if footing and self.clearers:   # blocked in: a walk that may also clear cells in its way
+            walkers, self.walkers = self.walkers, self.walkers + self.clearers
+            try:   # (a place is reached once, however cleared: the first way there is kept)
+                path = self.walk(state, finish, GATHER_LIMIT, keep=reserved | set(self.protected))
+            finally:
+                self.walkers = walkers
+            if path:
+                return path, "ok"
         # no walk reaches a supplier: search toward the cells holding a value that takes one
         values = {v for v, lst in sup.uses.items() for var, _ in lst if var in short}
         grid = self.model.grid.array(state)

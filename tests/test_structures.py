@@ -188,3 +188,25 @@ def test_solve_picks_build_for_a_cell_with_nothing_below():
     # steps.yaml: one stone at (2, 2, 1), one level up with nothing under it: the stone
     # below must come first, so the goal is built, not searched by A*
     assert default_solver(compile_dungeon(str(HERE / "steps.yaml"), goal="block[2, 2, 1].kind == stone")) == "build"
+
+
+def test_build_clears_its_way_to_a_supply(tmp_path):
+    # a corridor one cell deep and three high: a stone at (3, 1, 0) stands between the
+    # agent at x = 1 and a log lying on the ground at x = 5 (an item: no cell holds it, so
+    # only a walk finds it); no jump fits under the ceiling and there is no way round, so
+    # the stone must be broken: move, break, move, move, move onto the log (5, by hand)
+    path = tmp_path / "corridor.yaml"
+    path.write_text("dungeon: corridor\ndomain: builder\nwidth: 7\ndepth: 1\nheight: 3\n"
+                    "blocks: |\n  0..6 0 0 bedrock\n  3 1 0 stone\n"
+                    "items:\n  - {name: log0, kind: log, at: [5, 1, 0]}\n"
+                    "stock:\n  - {name: logs, kind: log, count: 0}\n  - {name: stones, kind: stone, count: 0}\n"
+                    "agent:\n  start: [1, 1, 0]\ngoal: 1 <= logs.count\n")
+    model = compile_dungeon(str(path))
+    result = get_solver("build")(model, Budget(time_limit=120), improve=0)
+    assert result.solved and replays(model, result.plan) and result.cost == 5
+    # the builder's own walk gets there (not its gbfs fallback)
+    from bcc.solvers.base import Meter
+    from bcc.solvers.build import _Builder
+    builder = _Builder(model, goal_cells(model, allow_empty=True), Meter(Budget(time_limit=60), None), None, 4000)
+    plan, state, why = builder.run(model.initial)
+    assert why is None and model.is_goal(state) and len(plan) == 5
