@@ -69,11 +69,13 @@ DOMAIN_CASES = {
     "required: [1, x]": (MINECRAFT.replace(ROOMS, ROOMS[:-1] + ", required: [1, x]}"), r"`required` lists fields"),
     "101 nested if blocks": (MINECRAFT.replace("effect: a.verticalDirection = 1", "effect: " + "if a.x > 0 { " * 101 +
                                                "a.verticalDirection = 1" + " }" * 101), r"nested more than"),
+    # the next two compare two attributes: a comparison with a constant outside the attribute's
+    # declared range is folded to true (the compiler's range folding), which would leave no limit to hit
     "120 preconditions": (MINECRAFT.replace("  look_down:\n    params: {a: agent}\n", "  look_down:\n    params: {a: agent}\n"
-                                            "    pre:\n" + "".join(f"      - a.x != {i} or a.z != {i}\n" for i in range(120))),
+                                            "    pre:\n" + "".join(f"      - a.x != a.z + {i} or a.z != a.x + {i}\n" for i in range(120))),
                           r"120 preconditions"),
     "200 elif branches": (MINECRAFT.replace("effect: a.verticalDirection = 1", "effect: if a.x == 0 { a.verticalDirection = 1 } " +
-                                            " ".join(f"elif a.x == {i} {{ a.verticalDirection = 1 }}" for i in range(1, 200))),
+                                            " ".join(f"elif a.x == a.z + {i} {{ a.verticalDirection = 1 }}" for i in range(1, 200))),
                           r"nested 200 deep"),
     "functions nested past the limit": (MINECRAFT.replace("functions:\n", "functions:\n  f0:\n    params: {a: agent}\n"
                                                           "    body: a.x > 0\n" + "".join(
