@@ -310,11 +310,17 @@ def generate_maze_cmd(width, depth, stones, lava, loops, seed, name, output, as_
     """A perfect maze (plus optional loops, stones and lava rivers), solvable by construction."""
     from ..generate import generate_maze
     text = generate_maze(width, depth, stones=stones, lava=lava, loops=loops, seed=seed, name=name)
+    _generated(text, output, as_json, {"width": width, "depth": depth, "stones": stones, "lava": lava,
+                                       "loops": loops, "seed": seed})
+
+
+def _generated(text: str, output, as_json: bool, info: dict) -> None:
+    """A generated dungeon: to FILE (atomically) or stdout; with --json, `info` and the
+    output's path, or the YAML itself when it went to no file."""
     if output:
         write_output(output, text)
     if as_json:
-        emit_json({"output": output, "width": width, "depth": depth, "stones": stones, "lava": lava,
-                    "loops": loops, "seed": seed, "yaml": None if output else text})
+        emit_json({"output": output, **info, "yaml": None if output else text})
     elif not output:
         click.echo(text, nl=False)
 
@@ -328,12 +334,7 @@ def generate_rooms_cmd(stones, name, output, as_json):
     """Three rooms in a row; carry every stone into the blue room (a manipulation task)."""
     from ..generate_rooms import generate_manipulation
     text = generate_manipulation(stones, name=name)
-    if output:
-        write_output(output, text)
-    if as_json:
-        emit_json({"output": output, "stones": stones, "yaml": None if output else text})
-    elif not output:
-        click.echo(text, nl=False)
+    _generated(text, output, as_json, {"stones": stones})
 
 
 def _structure_command(kind: str, summary: str):
@@ -350,13 +351,8 @@ def _structure_command(kind: str, summary: str):
     def command(width, length, height, material, name, output, as_task, as_json):
         from ..generate_structures import generate_structure
         text = generate_structure(kind, width, length, height, material=material, name=name, as_task=as_task)
-        if output:
-            write_output(output, text)
-        if as_json:
-            emit_json({"output": output, "kind": kind, "width": width, "length": length, "height": height,
-                       "material": material, "as_task": as_task, "yaml": None if output else text})
-        elif not output:
-            click.echo(text, nl=False)
+        _generated(text, output, as_json, {"kind": kind, "width": width, "length": length, "height": height,
+                                           "material": material, "as_task": as_task})
     return command
 
 
