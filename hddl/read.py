@@ -13,7 +13,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..errors import BccError
-from ..pddl_io.lifted import TRUE, Formulas, Reader, _define, _show, domain_from, problem_from, unsupported
+from ..pddl_io.lifted import Formulas, Reader, _define, _show, domain_from, problem_from
+from ..pddl_io.lifted_types import TRUE, unsupported
 from ..pddl_io.read import SList, read_sexpr
 from .task import HtnProblem, Method, Task
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..pddl_io.lifted import Domain, Problem
+from ..pddl_io.lifted_types import Domain, Problem
 
 
 @dataclass(frozen=True)

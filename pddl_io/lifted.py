@@ -10,7 +10,8 @@ use of one is replaced by its definition (the `or` of its rules, their quantifie
 variables renamed apart), so grounding and search never meet them. Anything else stops
 at its position with "... is not supported" (a recursive derived predicate too).
 
-The task's types and formulas are in lifted_types.py, derived predicates in derived.py.
+The task's types and formulas are in lifted_types.py (its readers import them from there),
+derived predicates in derived.py.
 """
 from __future__ import annotations
 
@@ -19,8 +20,7 @@ from dataclasses import replace
 
 from ..errors import BccError
 from .derived import check_derived, inline_derived
-from .lifted_types import (FALSE, TRUE, Action, Domain, Effect, Problem, conjuncts, err,  # noqa: F401 - the lifted task's
-                           is_a, unsupported)                                             # types, read from here too
+from .lifted_types import TRUE, Action, Domain, Effect, Problem, err, unsupported
 from .read import SList, read_sexpr
 
 KNOWN_REQUIREMENTS = {

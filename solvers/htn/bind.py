@@ -12,7 +12,7 @@ Formulas are those of pddl_io/lifted.py; a term starting with "?" is a variable.
 """
 from __future__ import annotations
 
-from ...pddl_io.lifted import conjuncts, is_a
+from ...pddl_io.lifted_types import conjuncts, is_a
 
 
 def is_var(term: str) -> bool:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from ...pddl_io.lifted import TRUE, conjuncts, is_a
+from ...pddl_io.lifted_types import TRUE, conjuncts, is_a
 from .bind import Join, Objects, holds, is_var
 from .estimate import method_cost, task_costs
 
