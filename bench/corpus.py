@@ -72,15 +72,22 @@ def _mode(rows, levels, mode, folds, seeds, pooled_only) -> dict:
     return entry
 
 
-def _nested(rows, folds, seeds, workers, save=None) -> dict:
+def _nested(rows, folds, seeds, workers, save=None, done=None) -> dict:
     """Nested cross-validation (--from tasks, pooled levels) on each shuffle, its folds on
-    `workers` processes: each shuffle's figures and choices, and the summary over them."""
+    `workers` processes: each shuffle's figures and choices, and the summary over them.
+    `done` (--resume): shuffles a previous run of the same settings finished, kept as they are."""
     from collections import Counter
 
     from bcc.grounding import pairs
     wall, cpu = time.perf_counter(), _cpu()
-    reports, by_seed = [], {}
+    done = {seed: entry for seed, entry in (done or {}).items() if int(seed) in seeds}
+    reports = [_saved_report(entry, rows) for entry in done.values()]
+    by_seed = dict(done)
     for seed in seeds:
+        if str(seed) in by_seed:
+            print(f"[nested] seed {seed}: kept from the previous run ({by_seed[str(seed)]['overall']:.1f} %)",
+                  file=sys.stderr)
+            continue
         t0 = time.perf_counter()
         r = pairs.evaluate(pairs.folds(rows, folds, seed), "tasks", workers=workers, nested_seed=seed)
         reports.append(r)
@@ -93,6 +100,16 @@ def _nested(rows, folds, seeds, workers, save=None) -> dict:
         if save:       # each shuffle as it ends: a run cut short still leaves its finished shuffles
             save(_nested_result(reports, by_seed, wall, cpu))
     return _nested_result(reports, by_seed, wall, cpu)
+
+
+def _saved_report(entry: dict, rows: list) -> dict:
+    """A finished shuffle read back from the output file, in the shape `summarise` reads
+    (accuracies and each level's count: the count is the corpus's, the same every shuffle)."""
+    totals = {}
+    for r in rows:
+        totals[r["level"]] = totals.get(r["level"], 0) + 1
+    return {"accuracy": entry["overall"] / 100, "pairs": rows,
+            "by_level": {lv: {"accuracy": v / 100, "total": totals[lv]} for lv, v in entry["pooled"].items()}}
 
 
 def _nested_result(reports, by_seed, wall, cpu) -> dict:
@@ -144,6 +161,9 @@ def main(argv=None) -> int:
     ap.add_argument("--nested", action="store_true",
                     help="nested cross-validation (votes chosen inside each fold), --from tasks: bench/corpus_nested.json")
     ap.add_argument("-o", "--output", default=None, help="[default: bench/corpus.json, or corpus_nested.json]")
+    ap.add_argument("--resume", action="store_true",
+                    help="with --nested: keep the shuffles the output file already holds (same pairs, folds and "
+                         "configurations) and run only the others")
     args = ap.parse_args(argv)
     from bcc.grounding import pairs
     folds = 3 if args.quick else args.folds
@@ -202,6 +222,23 @@ def _limits(rows) -> tuple[float, float]:
     return train_cpu, 1000 * (time.process_time() - t0) / len(sample)
 
 
+def _resumable(args, output: str, rows, folds) -> dict:
+    """The finished shuffles of `output`, if it was written with the same pairs, folds and
+    configurations (else none: a changed setting runs every shuffle again)."""
+    from bcc.grounding import nested
+    try:
+        old = json.loads(Path(output).read_text())
+    except (OSError, ValueError):
+        return {}
+    same = (old.get("count") == len(rows) and old.get("folds") == folds and old.get("inner_folds") == nested.INNER
+            and old.get("configs") == {name: list(w) for name, w in nested.CONFIGS}
+            and old.get("pool") == [name for name, _, _ in nested.POOL])
+    if not same:
+        print(f"[nested] {output} was written with other settings: every shuffle runs", file=sys.stderr)
+        return {}
+    return old.get("nested", {}).get("by_seed", {})
+
+
 def _report_nested(args, rows, levels, folds, seeds) -> int:
     from bcc.atomic import write_text
     from bcc.grounding import nested
@@ -216,7 +253,7 @@ def _report_nested(args, rows, levels, folds, seeds) -> int:
         if limits:
             out |= {"train_all_cpu_seconds": round(limits[0], 2), "command_cpu_ms": round(limits[1], 3)}
         write_text(output, json.dumps(out, indent=2) + "\n")
-    result = _nested(rows, folds, seeds, args.workers, save)
+    result = _nested(rows, folds, seeds, args.workers, save, _resumable(args, output, rows, folds) if args.resume else None)
     train_cpu, command_ms = _limits(rows)
     print(f"{len(rows)} pairs, nested {folds}-fold cross-validation (inner {nested.INNER}-fold, "
           f"{len(nested.CONFIGS)} configurations), --from tasks, accuracy %; {result['cpu_seconds']:.0f} s CPU, "

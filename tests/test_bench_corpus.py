@@ -77,3 +77,27 @@ def test_the_corpus_benchmark_reports_each_shuffle_and_their_mean(tmp_path):
             assert mine["pooled"] == pytest.approx({lv: 100 * v["accuracy"] for lv, v in again["by_level"].items()})
         for lv in ("L0", "L1"):
             assert entry["pooled"][lv] == pytest.approx(sum(e["pooled"][lv] for e in entry["by_seed"].values()) / 2)
+
+
+@pytest.mark.slow
+def test_a_resumed_nested_run_keeps_finished_shuffles_and_summarises_all(tmp_path):
+    """--resume runs only the shuffles the file lacks; the summary over all of them is the
+    one a single run of every shuffle gives (its figures are per-shuffle means)."""
+    data = pairs_file(tmp_path / "pairs.jsonl")
+    out = tmp_path / "nested.json"
+    base = [sys.executable, str(ROOT / "bench" / "corpus.py"), "--pairs", str(data), "--folds", "2", "--nested",
+            "--workers", "1", "-o", str(out)]
+    first = subprocess.run(base + ["--seeds", "3"], capture_output=True, text=True)
+    assert first.returncode == 0, first.stderr
+    seed3 = json.loads(out.read_text())["nested"]["by_seed"]["3"]
+    second = subprocess.run(base + ["--seeds", "3,5", "--resume"], capture_output=True, text=True)
+    assert second.returncode == 0, second.stderr
+    assert "seed 3: kept from the previous run" in second.stderr
+    report = json.loads(out.read_text())
+    assert report["nested"]["by_seed"]["3"] == seed3 and set(report["nested"]["by_seed"]) == {"3", "5"}
+    together = subprocess.run(base[:-1] + [str(tmp_path / "all.json"), "--seeds", "3,5"], capture_output=True, text=True)
+    assert together.returncode == 0, together.stderr
+    whole = json.loads((tmp_path / "all.json").read_text())["nested"]["summary"]
+    for lv, v in report["nested"]["summary"].items():
+        assert v["mean"] == pytest.approx(whole[lv]["mean"]) and v["ci95"] == pytest.approx(whole[lv]["ci95"])
+        assert v["total"] == whole[lv]["total"]
