@@ -10,13 +10,15 @@ The search configuration is the `search` option, else the environment variable
 """
 from __future__ import annotations
 
+import contextlib
 import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from ..errors import BccError
@@ -86,6 +88,30 @@ def run(domain_file: str, problem_file: str, search: str | None = None, time_lim
     return fd
 
 
+GRACE = 2.0   # seconds Fast Downward may overrun its own limit before bcc stops it
+
+
+def _bounded(cmd: list, cwd: str, time_limit: float | None):
+    """Run `cmd`; None if it outlived `time_limit` + GRACE of wall-clock time. Fast
+    Downward's own --overall-time-limit counts CPU time, which a loaded machine stretches
+    (19 s of wall time on a 1 s limit in CI): the process group is killed here."""
+    proc = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    try:
+        out, err = proc.communicate(timeout=None if time_limit is None else max(1.0, time_limit) + GRACE)
+    except subprocess.TimeoutExpired:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        return None
+    except BaseException:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+        raise
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
+
+
 def _run(domain_file: str, problem_file: str, search: str, time_limit: float | None, memory_mb: float | None,
          full_names: bool) -> FdRun:
     with tempfile.TemporaryDirectory(prefix="bcc-fd-") as tmp:
@@ -97,8 +123,11 @@ def _run(domain_file: str, problem_file: str, search: str, time_limit: float | N
             cmd += ["--overall-memory-limit", f"{int(memory_mb)}M"]
         cmd += [os.path.abspath(domain_file), os.path.abspath(problem_file), "--search", search]
         start = time.perf_counter()
-        proc = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True)
+        proc = _bounded(cmd, tmp, time_limit)
         seconds = time.perf_counter() - start
+        if proc is None:
+            return FdRun(False, [], None, seconds, "budget", "stopped: Fast Downward ran out of time (stopped by bcc)",
+                         search=search)
         counts = {"expanded": _counter(proc.stdout, "Expanded"), "generated": _counter(proc.stdout, "Generated"),
                   "search": search}
         if proc.returncode == 0 and os.path.exists(plan_file):
@@ -174,8 +203,6 @@ def _export_limit(budget):
     """The export (task.py) has no budget checks of its own: bound it by a timer, unless
     the command already runs under one (solvers/limits.py's hard_limits), which it
     would cancel."""
-    import contextlib
-    import signal
     import threading
     if budget.time_limit is None or threading.current_thread() is not threading.main_thread() \
             or signal.getitimer(signal.ITIMER_REAL)[0] > 0:
@@ -186,7 +213,9 @@ def _export_limit(budget):
         def expire(signum, frame):
             raise _Expired()
         old = signal.signal(signal.SIGALRM, expire)
-        signal.setitimer(signal.ITIMER_REAL, budget.time_limit)
+        # and again every 50 ms: a raise inside a garbage-collector callback (hypothesis
+        # installs one) is printed and dropped, and the export ran on for 19 s in CI
+        signal.setitimer(signal.ITIMER_REAL, budget.time_limit, 0.05)
         try:
             yield
         finally:
@@ -210,12 +239,15 @@ def solve(model, budget, progress=None, search: str | None = None, **_):
     files = model.data("pddl_files")
     if files is not None:
         return _solve_files(model, budget, files, search, start)
+    spent = Result(solver="fd", solved=False, status="budget", budget="time_limit",
+                   message="stopped: the time limit (--time-limit) ran out while exporting the model to PDDL")
     try:
         with _export_limit(budget):
             task = build_task(model)
     except _Expired:
-        return Result(solver="fd", solved=False, status="budget", seconds=round(time.perf_counter() - start, 6), budget="time_limit",
-                      message="stopped: the time limit (--time-limit) ran out while exporting the model to PDDL")
+        return replace(spent, seconds=round(time.perf_counter() - start, 6))
+    if budget.time_limit is not None and time.perf_counter() - start >= budget.time_limit:
+        return replace(spent, seconds=round(time.perf_counter() - start, 6))
     with tempfile.TemporaryDirectory(prefix="bcc-pddl-") as tmp:
         dom, prob = os.path.join(tmp, "domain.pddl"), os.path.join(tmp, "problem.pddl")
         write_text(dom, domain_text(task))
