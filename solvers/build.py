@@ -32,6 +32,7 @@ GATHER_LIMIT = 100_000   # states a walk to a supply may visit (positions, in ef
 SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_UP_TO = 40       # plans this short are handed to A* for a shorter one
 IMPROVE_STATES = 100_000
+IMPROVE_FLOOR = 1.0      # seconds the improving A* may always take (more if finding the plan took more)
 IMPROVE_MB = 400         # the process's memory at which A*'s try stops
 RETRY = 8          # atoms achieved before a set-aside atom is tried again
 
@@ -241,6 +242,14 @@ class _Builder:
         need = min((k for lst in self.supplies.uses.values() for v, k in lst if v == var), default=0)
         return self.supplies.value(state, var) < need
 
+    def _starved(self, state, value) -> bool:
+        """Writing `value` takes more of a variable than the state holds, and no gathering
+        walk found a way to raise it (`exhausted`): the atom's greedy search, whose h is
+        the walk alone, cannot get it either (crafting_wall: 4 x 4,000 expansions for
+        nothing), so the atom waits for the gbfs fallback."""
+        return any(var in self.exhausted and self.supplies.value(state, var) < k
+                   for var, k in self.supplies.uses.get(value, ()))
+
     def _reserved(self, todo) -> set:
         """Cells that every achiever of a pending atom needs to hold something (what it rests
         on): a supply must not be taken from them."""
@@ -426,6 +435,9 @@ class _Builder:
                     for pos, v in todo.items() if pos not in set_aside and blockers.get(pos, 0) <= 0)
             progressed = False
             for k, (_, pos) in enumerate(candidates):
+                if self.supplies and self._starved(state, todo[pos]):
+                    set_aside[pos] = RETRY
+                    continue
                 path = self.prepare(state, pos, todo) if k < CANDIDATES and self.footing[0] else None
                 why = "ok"
                 if path is None:
@@ -453,8 +465,8 @@ class _Builder:
 
 
 @declare(Option("local_limit", int, 4000, "expansions of one atom's greedy search before it is set aside", low=1),
-         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to blind A* (a quarter of the time "
-                "left, at most 100,000 states and 400 MB) for a shorter one; 0: never", low=0))
+         Option("improve", int, IMPROVE_UP_TO, "plans of at most this many actions are handed to blind A* (as long as finding the "
+                "plan took, at least 1 s, at most a quarter of the time left, 100,000 states and 400 MB) for a shorter one; 0: never", low=0))
 def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve: int = IMPROVE_UP_TO,
           **options) -> Result:
     """Builds a goal of many cell atoms one atom at a time (satisficing), reporting a lower bound."""
@@ -486,7 +498,9 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
     if len(actions) <= SHORTEN_UP_TO:   # detours out: O(n^2) steps of the simulator
         actions = eliminate(model, actions, lambda: budget.time_limit is not None and meter.elapsed() > budget.time_limit)
     if 0 < len(actions) <= improve:   # short: an optimal search may finish and find a shorter plan
-        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed()) / 4
+        left = max(IMPROVE_FLOOR, meter.elapsed())   # at most as long again as the plan took (anytime doubling)
+        if budget.time_limit is not None:
+            left = min(left, max(0.0, budget.time_limit - meter.elapsed()) / 4)
         mem = min(IMPROVE_MB, budget.max_memory_mb / 2) if budget.max_memory_mb else IMPROVE_MB
         better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem),
                                         heuristic="blind")

@@ -290,3 +290,30 @@ def test_a_blueprint_goal_is_listed_as_one_line():
     listed = json.loads(CliRunner().invoke(main, ["list", "--json"]).stdout)
     goals = {d["name"]: d["goal"] for d in listed["dungeons"]}
     assert goals["crafting_wall"] == "structure of 2 cells at [1, 1, 3]" and goals["crafting_bench"] == "has(cobblestone, 1)"
+
+
+def test_an_atom_whose_stock_no_walk_can_raise_gets_no_greedy_search(monkeypatch):
+    """On crafting_wall the cobblestone to place must be mined with a pickaxe that must be
+    crafted: no gathering walk raises the stock, so each atom's greedy search (h = the walk
+    alone) is skipped and gbfs finishes from where the builder stands."""
+    from bcc.solvers import build
+    searched = []
+    real = build._Builder.reach
+    monkeypatch.setattr(build._Builder, "reach", lambda self, state, atom: searched.append(atom) or real(self, state, atom))
+    result = get_solver("build")(compile_dungeon("crafting_wall"), Budget(time_limit=120), improve=0)
+    assert result.solved and searched == []
+
+
+def test_a_starved_value_is_one_whose_exhausted_stock_is_below_its_use():
+    from bcc.heuristics.goal_cells import goal_cells
+    from bcc.solvers import build
+    from bcc.solvers.base import Meter
+    model = compile_dungeon("crafting_wall")
+    cells = goal_cells(model)
+    builder = build._Builder(model, cells, Meter(Budget(), None), Budget(), 10)
+    (pos, value), = {cells.atoms[0]}
+    (var, amount), = builder.supplies.uses[value]       # one cobblestone a block placed
+    assert builder.supplies.value(model.initial, var) < amount   # none at the start
+    assert not builder._starved(model.initial, value)   # no gathering tried yet
+    builder.exhausted[var] = 0
+    assert builder._starved(model.initial, value)
