@@ -1,6 +1,7 @@
 """An on-disk cache of loaded dungeons (their YAML read and their domain's expressions
-parsed), so a warm `bcc solve` skips YAML, lark and the grammar; and of costly analyses
-of a compiled model (`cached_analysis`: the pattern database).
+parsed), so a warm `bcc solve` skips YAML, lark and the grammar; of loaded domains, so a
+new dungeon on a known domain (a generated house) parses only itself; and of costly
+analyses of a compiled model (`cached_analysis`: the pattern database).
 
 Like `.pyc` files: safe to delete, rebuilt when stale, never trusted across versions.
 An entry is found by the hash of bcc's version (a fingerprint of its code), Python's
@@ -69,12 +70,12 @@ def _version() -> str:
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
 
-def _entry(path: Path, data: bytes) -> Path | None:
+def _entry(path: Path, data: bytes, kind: str = "dungeons") -> Path | None:
     folder = cache_dir()
     if folder is None:
         return None
     key = hashlib.sha256(b"\0".join([_version().encode(), str(path.resolve()).encode(), data])).hexdigest()
-    return folder / "dungeons" / f"{key[:40]}.pickle"
+    return folder / kind / f"{key[:40]}.pickle"
 
 
 def _fresh(files) -> bool:
@@ -88,25 +89,32 @@ def _fresh(files) -> bool:
     return True
 
 
-def load_cached(path: Path, load):
-    """`load(path)`, or the cached result of an earlier load of the same files."""
+def load_cached(path: Path, load, kind: str = "dungeons"):
+    """`load(path)`, or the cached result of an earlier load of the same files. Loads nest
+    (a dungeon's load reads its domain through a cached load of its own, kind "domains":
+    a new dungeon on a shipped domain skips the domain's YAML and lark): the files an
+    inner load read, found or loaded, are the outer entry's files too."""
     global _RECORDING
     try:
         with open(path, "rb") as f:
             data = f.read()
-        entry = _entry(path, data)
+        entry = _entry(path, data, kind)
     except (OSError, ValueError):
         entry = None
     if entry is not None:
-        found = _read(entry)
+        found = _read(entry, want_record=True)
         if found is not None:
-            return found
+            if _RECORDING is not None:
+                _RECORDING.extend(found.get("files", ()))
+            return found["value"]
     outer, _RECORDING = _RECORDING, []
     try:
         value = load(path)
         files = _RECORDING
     finally:
         _RECORDING = outer
+    if outer is not None:
+        outer.extend(files)
     if entry is not None and files and all(name and digest for name, digest in files):
         _write(entry, {"version": _version(), "files": files, "value": value})
     return value
@@ -131,7 +139,8 @@ def cached_analysis(kind: str, key: bytes, build):
     return value
 
 
-def _read(entry: Path):
+def _read(entry: Path, want_record: bool = False):
+    """The value of a fresh entry (with `want_record`, the whole record: value and files), or None."""
     try:
         with open(entry, "rb") as f:
             record = _SafeUnpickler(f).load()
@@ -145,7 +154,7 @@ def _read(entry: Path):
         os.utime(entry)   # used now: the trim keeps recently used entries
     except OSError:
         pass
-    return record.get("value")
+    return record if want_record else record.get("value")
 
 
 def _write(entry: Path, record: dict) -> None:

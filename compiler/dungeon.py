@@ -113,7 +113,8 @@ def load_dungeon(ref: str | Path, domain: Domain | None = None) -> Dungeon:
             dpath = resolve_domain_path(str(dref), data.src_of("domain") and Path(data.src_of("domain").path))
         except BccError as exc:
             raise (error_at(data, "domain", exc.message) if "domain" in data else exc) from None
-        domain = load_domain(dpath)
+        from .cache import load_cached
+        domain = load_cached(dpath, load_domain, kind="domains")   # parsed once per domain, not per dungeon
     return _Builder(domain, data, path).build()
 
 

@@ -63,11 +63,36 @@ class Analysis:
 
         return cell, layer
 
+    def box(self, written: dict):
+        """`box(xs, ys, zs)`: the union of `cell(x, y, z)` over the box, read row by row."""
+        L, area = self.L, self.area
+        W, D, H, grid, default = L.width, L.depth, L.height, L.static_grid, L.grid_default
+
+        def box(xs, ys, zs):
+            if not xs or not ys or not zs:
+                return frozenset()
+            inx = [x for x in xs if 0 <= x < W]
+            inz = [z for z in zs if 0 <= z < D]
+            out = set()
+            if len(inx) < len(xs) or len(inz) < len(zs) or any(not 0 <= y < H for y in ys):
+                out.add(default)
+            if not inx or not inz:
+                return frozenset(out)
+            for y in ys:
+                if not 0 <= y < H:
+                    continue
+                out |= written.get(y, frozenset())
+                for z in inz:
+                    row = y * area + z * W
+                    out.update([grid[row + x] for x in inx])
+            return frozenset(out)
+        return box
+
     def abstract(self, action, sets: dict, written: dict, pins=None) -> Abstract:
         """An abstract evaluator for one action; after `applies`, narrowed by its preconditions."""
         cell, layer = self.cells(written)
         lets = {loc.name: value for loc, value in action.lets}
-        return Abstract(lets, cell, layer, sets=sets, pins=dict(pins or {}), var_at=self.var_at)
+        return Abstract(lets, cell, layer, sets=sets, pins=dict(pins or {}), var_at=self.var_at, box=self.box(written))
 
     def applies(self, action, ab: Abstract) -> bool:
         """May the action's preconditions hold? If so, narrow `ab` by them for its effects."""

@@ -12,6 +12,8 @@ import random
 from collections import deque
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bcc.compiler import compile_dungeon
 from bcc.solvers import Budget, get_solver
@@ -143,3 +145,29 @@ def test_suboptimal_solvers_find_valid_plans(solver, bound):
         assert result.solved and replay(model, [(a, 1, 1) for a in result.plan]).valid
         if bound:
             assert result.cost <= bound * optimal
+
+
+def _layout(width, depth, height, grid, default):
+    from types import SimpleNamespace
+    return SimpleNamespace(width=width, depth=depth, height=height, static_grid=bytes(grid), grid_default=default)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.data())
+def test_the_box_reader_is_the_union_of_its_cells(data):
+    """reachability's `box` (every cell of a box at once) answers what the cell-by-cell
+    union does, out-of-range coordinates and written layers included."""
+    import itertools
+
+    from bcc.compiler.reachability import Analysis
+    w, d, h = (data.draw(st.integers(1, 4)) for _ in range(3))
+    grid = data.draw(st.lists(st.integers(0, 5), min_size=w * d * h, max_size=w * d * h))
+    an = Analysis(_layout(w, d, h, grid, 0), 6)
+    written = {y: frozenset(data.draw(st.sets(st.integers(0, 9), max_size=3))) for y in range(h) if data.draw(st.booleans())}
+    coords = st.sets(st.integers(-2, 6), max_size=4)
+    xs, ys, zs = data.draw(coords), data.draw(coords), data.draw(coords)
+    cell, _ = an.cells(written)
+    expected = set()
+    for x, y, z in itertools.product(xs, ys, zs):
+        expected |= cell(x, y, z)
+    assert an.box(written)(xs, ys, zs) == frozenset(expected)

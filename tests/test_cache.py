@@ -61,6 +61,24 @@ def test_an_edited_domain_makes_the_entry_stale(cache_dir, tmp_path):
     assert "walk_forward" in second.action_names and "move_forward" in first.action_names
 
 
+def test_a_second_dungeon_on_a_domain_reads_the_parsed_domain_from_the_cache(cache_dir, tmp_path, monkeypatch):
+    """The domain has an entry of its own: a new dungeon on it (a generated house) does not
+    parse it again; and that dungeon's entry still lists the domain's files, so editing the
+    domain makes it stale although its load found the domain in the cache."""
+    from bcc.compiler import dungeon
+    first = copy_bridge(tmp_path)
+    second = tmp_path / "bridge_again.yaml"
+    second.write_text(first.read_text().replace("dungeon: bridge", "dungeon: bridge_again"))
+    compile_dungeon(first)
+    loads = []
+    real = dungeon.load_domain
+    monkeypatch.setattr(dungeon, "load_domain", lambda path: loads.append(path) or real(path))
+    assert "move_forward" in compile_dungeon(second).action_names and loads == []
+    domain = tmp_path / "minecraft.yaml"
+    domain.write_text(domain.read_text().replace("  move_forward:", "  walk_forward:", 1))
+    assert "walk_forward" in compile_dungeon(second).action_names and len(loads) == 1
+
+
 def test_a_tampered_entry_never_runs_code(cache_dir, tmp_path):
     compile_dungeon("bridge")
     (entry,) = entries(cache_dir)
