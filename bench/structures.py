@@ -11,7 +11,8 @@ system of the child), then `bcc validate` on the plan (the replay check). Report
 s, plan length, the solver's admissible lower bound, their ratio, and whether the plan
 replays. Variants of the smallest house: mirrored (x -> -x), rotated (90 degrees: the
 layers' rows and columns swapped), the goal's atoms shuffled (written as a `goal:` list
-of cell atoms in a random order). Blueprints: a bridge (an overhang on four posts), a
+of cell atoms in a random order), and every name of the domains renamed (bench/rename_world.py).
+Blueprints: a bridge (an overhang on four posts), a
 tower (an enclosed room) and a seeded random blueprint with overhangs. Targets (issue
 30): 10^3 under 5 s, 25^3 under 60 s, length within 1.5 x of the bound. Prints a table,
 writes bench/structures.json.
@@ -126,6 +127,10 @@ def main() -> None:
               ("bridge_5x3x3", _generate("bridge", 5, 3, 3)), ("tower_4x4x5", _generate("tower", 4, 4, 5)),
               ("random_1", random_blueprint(1)), ("random_2", random_blueprint(2))]
     with tempfile.TemporaryDirectory() as d:
+        from rename_world import rename_world   # bench/rename_world.py: every name the domains define, renamed
+        (Path(d) / "small.yaml").write_text(small)
+        renamed, _, _ = rename_world(Path(d) / "small.yaml", Path(d) / "renamed")
+        cases.insert(3, (f"house_{sizes[0]}_renamed", renamed.read_text()))
         for name, text in cases:
             if args.only and not re.search(args.only, name):
                 continue
