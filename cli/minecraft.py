@@ -97,7 +97,8 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
 
 @minecraft.command("run")
 @click.argument("dungeon")
-@click.option("--solver", default="astar", show_default=True, help="The planner (see `bcc solvers`).")
+@click.option("--solver", default=None, help="The planner (see `bcc solvers`) [default: `bcc solve`'s choice: "
+              "build for a structure goal, astar for most others].")
 @port_option
 @goal_option
 @time_limit_option("Seconds for each (re)plan.", default=60.0, show_default=True)
@@ -114,11 +115,16 @@ def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json, 
     difference the world wins and bcc replans from it. The server applies no lava damage
     and none of bcc's rules: the bridge checks each action with the model first.
     """
-    from ..solvers import Budget, get_solver
+    from ..solvers import Budget, default_solver, get_solver
     from ..minecraft.run import run_dungeon
+    pick = solver is None and all(v in (None, ()) for v in solver_options.values())
+    solver = solver or "astar"
     get_solver(solver)   # an unknown solver or option is bad input, before starting anything
     options = solver_request(solver, solver_options)
     model = compile_model(dungeon, goal)
+    if pick:             # bcc solve's default, by the goal (solvers.default_solver)
+        solver = default_solver(model)
+        options = solver_request(solver, {})
     budget = Budget(time_limit=time_limit, max_memory_mb=Budget.default().max_memory_mb)
     out = (lambda line: click.echo(line, err=True)) if as_json else click.echo
     result = run_dungeon(model, port, solver=solver, budget=budget, log=out, log_path=_log_path(port),

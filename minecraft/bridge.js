@@ -153,10 +153,45 @@ function addToHotbar (player, itemName) {
       if (!slot || slot.type === -1) { target = i; break }
     }
   }
-  if (target < 0) return
-  const slot = player.inventory.slots[36 + target]
+  let index = 36 + target
+  if (target < 0) {
+    // the hotbar is full: the main inventory (a model that counts carried blocks sees it)
+    index = -1
+    for (let i = 9; i < 36 && index < 0; i++) {
+      const slot = player.inventory.slots[i]
+      if (slot && slot.type === item.id && slot.count < item.stackSize) index = i
+    }
+    for (let i = 9; i < 36 && index < 0; i++) {
+      const slot = player.inventory.slots[i]
+      if (!slot || slot.type === -1) index = i
+    }
+    if (index < 0) return
+  }
+  const slot = player.inventory.slots[index]
   const count = slot && slot.type === item.id ? slot.count + 1 : 1
-  player.inventory.updateSlot(36 + target, new Item(item.id, count))
+  player.inventory.updateSlot(index, new Item(item.id, count))
+}
+
+// Fill a player's 36 slots with item totals ([[name, count], ...]): one stack of each
+// in the hotbar first, the rest in the main inventory, then the hotbar's free slots.
+function fillInventory (p, totals) {
+  const stacks = []
+  for (const [name, count] of totals) {
+    const item = registry.itemsByName[name]
+    if (!item) throw new Error(`Minecraft ${settings.version} has no item named '${name}'`)
+    for (let left = count; left > 0; left -= item.stackSize) stacks.push([item, Math.min(left, item.stackSize), stacks.length])
+  }
+  const firsts = stacks.filter((s, i) => i === 0 || stacks[i - 1][0] !== s[0]).slice(0, 9)
+  const rest = stacks.filter(s => !firsts.includes(s))
+  const order = []
+  for (let i = 0; i < 9; i++) order.push(36 + i)
+  for (let i = 9; i < 36; i++) order.push(i)
+  const free = order.slice(firsts.length)
+  const mainFirst = free.filter(i => i < 36).concat(free.filter(i => i >= 36))
+  if (stacks.length > 36) throw new Error(`the inventory needs ${stacks.length} stacks; a player has 36 slots`)
+  for (let i = 9; i < 45; i++) p.inventory.updateSlot(i, null)
+  firsts.forEach(([item, count], i) => p.inventory.updateSlot(36 + i, new Item(item.id, count)))
+  rest.forEach(([item, count], i) => p.inventory.updateSlot(mainFirst[i], new Item(item.id, count)))
 }
 
 function stateIdOf (name) {
@@ -210,8 +245,9 @@ function players () {
 
 // Put a player into a cell, facing a yaw (degrees, Minecraft's: 0 = south), with a
 // hotbar (list of [item name, count] or null) and a selected slot.
-async function setup ({ player, position, yaw, pitch, hotbar, selected }) {
+async function setup ({ player, position, yaw, pitch, hotbar, selected, inventory }) {
   const p = findPlayer(player)
+  if (inventory) fillInventory(p, inventory)
   if (hotbar) {
     for (let i = 0; i < 36; i++) p.inventory.updateSlot(9 + i, null)
     hotbar.forEach((entry, i) => {
@@ -227,6 +263,7 @@ async function setup ({ player, position, yaw, pitch, hotbar, selected }) {
   if (bot) {
     // Move the bot from its own side (the server trusts the client's position): a server
     // teleport would also send flying-squid's byte angles as degrees and scramble the view.
+    bot.physicsEnabled = true
     bot.clearControlStates()
     bot.entity.velocity.set(0, 0, 0)
     bot.entity.position.set(target.x, target.y, target.z)
@@ -280,8 +317,21 @@ function observePlayer (p) {
     pitch: p.pitch * 360 / 256,
     onGround: !!p.onGround,
     selected: p.heldItemSlot,
-    hotbar
+    hotbar,
+    inventory: inventoryTotals(p)
   }
+}
+
+// every item the player carries (hotbar and main inventory): {name: count}
+function inventoryTotals (p) {
+  const out = {}
+  for (let i = 9; i < 45; i++) {
+    const slot = p.inventory.slots[i]
+    if (!slot || slot.type === -1 || slot.count <= 0) continue
+    const name = registry.items[slot.type]?.name || String(slot.type)
+    out[name] = (out[name] || 0) + slot.count
+  }
+  return out
 }
 
 async function observe ({ player, blocks }) {
@@ -384,13 +434,18 @@ function sameAngle (a, b) {
 }
 
 // One canonical action, with the geometry worked out by Python:
-//   look {yaw, pitch}; select {slot}; walk {target: [x, y, z] (the cell's centre)};
-//   dig {block: [x, y, z]}; place {reference: [x, y, z], face: [dx, dy, dz], at: [x, y, z]}
-// yaw and pitch (the view to keep afterwards) come with every action.
-async function act ({ player, kind, yaw, pitch, slot, target, block, reference, face, at, item }) {
+//   look {yaw, pitch}; select {slot}; walk {target: [x, y, z] (the cell's centre), jump};
+//   dig {block: [x, y, z], instant}; place {reference: [x, y, z], face: [dx, dy, dz], at:
+//   [x, y, z], item, block, select}; pillar {target, reference, face, at, item, block} (jump
+//   and place a block where the feet were); fall {target} (wait until the bot has landed
+//   there); hover {target} (hold the bot in a cell without physics: a model without gravity)
+// yaw and pitch (the view to keep afterwards) come with the minecraft domain's actions;
+// `hover` (the bot holds still in the air afterwards) with the building domains'.
+async function act ({ player, kind, yaw, pitch, slot, target, block, reference, face, at, item, jump, instant, select, hover }) {
   const bot = botNamed(player)
   const p = findPlayer(player)
   const started = Date.now()
+  const view = yaw !== undefined && yaw !== null
   if (kind === 'look') {
     await bot.look(mfYaw(yaw), mfPitch(pitch), true)
     await settleLook(bot, p, yaw, pitch)
@@ -398,31 +453,139 @@ async function act ({ player, kind, yaw, pitch, slot, target, block, reference, 
     bot.setQuickBarSlot(slot)
     await until(() => p.heldItemSlot === slot, 3000, 'the server seeing the new hotbar slot')
   } else if (kind === 'walk') {
-    await walk(bot, p, new Vec3(target[0], target[1], target[2]), yaw, pitch)
+    bot.physicsEnabled = true
+    await walk(bot, p, new Vec3(target[0], target[1], target[2]), yaw, pitch || 0, !!jump)
+  } else if (kind === 'hover') {
+    bot.physicsEnabled = false
+    bot.clearControlStates()
+    bot.entity.velocity.set(0, 0, 0)
+    const t = new Vec3(target[0], target[1], target[2])
+    bot.entity.position.set(t.x, t.y, t.z)
+    await until(() => p.position.distanceTo(t) < 0.01, 3000, 'the server seeing the bot in the new cell')
+  } else if (kind === 'fall') {
+    bot.physicsEnabled = true
+    await land(bot, p, new Vec3(target[0], target[1], target[2]))
   } else if (kind === 'dig') {
     const pos = new Vec3(block[0], block[1], block[2])
     const b = bot.blockAt(pos)
     if (!b || b.name === 'air') throw new Error(`there is no block to dig at ${pos}`)
-    const before = countItem(p, b.name)
-    await withTimeout(bot.dig(b, true), 10000, 'digging')
+    const before = countItem(p, b.name, !view)
+    if (instant) {
+      // A model without tools breaks a block at once: start and finish digging in one go
+      // (the server takes it; a player would need the block's hand-mining time).
+      bot._client.write('block_dig', { status: 0, location: pos, face: 1 })
+      bot._client.write('block_dig', { status: 2, location: pos, face: 1 })
+      bot.swingArm()
+    } else {
+      await withTimeout(bot.dig(b, true), 10000, 'digging')
+    }
     await until(async () => (await serv.overworld.getBlock(pos)).name === 'air', 3000, 'the mined block disappearing')
-    // it reaches the hotbar in the same tick, unless the hotbar is full (then it is lost)
-    await until(() => countItem(p, b.name) > before || hotbarFull(p), 1000, 'the mined block reaching the hotbar')
-    await bot.look(mfYaw(yaw), mfPitch(pitch), true)
-    await settleLook(bot, p, yaw, pitch)
-  } else if (kind === 'place') {
+    // it reaches the inventory in the same tick, unless it is full (then it is lost)
+    await until(() => countItem(p, b.name, !view) > before || hotbarFull(p), 1000, 'the mined block reaching the inventory')
+    if (view) {
+      await bot.look(mfYaw(yaw), mfPitch(pitch), true)
+      await settleLook(bot, p, yaw, pitch)
+    }
+  } else if (kind === 'place' || kind === 'pillar') {
     const ref = bot.blockAt(new Vec3(reference[0], reference[1], reference[2]))
     const dest = new Vec3(at[0], at[1], at[2])
+    const want = block || item
     if (!ref) throw new Error(`no block to place against at ${reference}`)
-    await withTimeout(bot.placeBlock(ref, new Vec3(face[0], face[1], face[2])), 8000, 'placing a block')
-    await until(async () => (await serv.overworld.getBlock(dest)).name === item, 3000, `the placed ${item} appearing in the world`)
-    await bot.look(mfYaw(yaw), mfPitch(pitch), true)
-    await settleLook(bot, p, yaw, pitch)
-    await holdLook(bot, p, yaw, pitch)
+    if (select) await hold(bot, p, item)
+    if (kind === 'pillar') {
+      await pillar(bot, p, ref, new Vec3(face[0], face[1], face[2]), dest, want, new Vec3(target[0], target[1], target[2]))
+    } else if (select) {
+      // click the face and wait on the server's world (mineflayer's own wait for the
+      // client's block update can take a second)
+      await bot._genericPlace(ref, new Vec3(face[0], face[1], face[2]), { swingArm: 'right', forceLook: true })
+      await until(async () => (await serv.overworld.getBlock(dest)).name === want, 3000, `the placed ${want} appearing in the world`)
+    } else {
+      await withTimeout(bot.placeBlock(ref, new Vec3(face[0], face[1], face[2])), 8000, 'placing a block')
+      await until(async () => (await serv.overworld.getBlock(dest)).name === want, 3000, `the placed ${want} appearing in the world`)
+    }
+    if (view) {
+      await bot.look(mfYaw(yaw), mfPitch(pitch), true)
+      await settleLook(bot, p, yaw, pitch)
+      await holdLook(bot, p, yaw, pitch)
+    }
   } else {
     throw new Error(`unknown action kind '${kind}'`)
   }
+  if (hover !== undefined) bot.physicsEnabled = !hover
   return { ms: Date.now() - started, observation: observePlayer(p) }
+}
+
+// Hold an item in the hand: select the hotbar slot that has it, else first move a stack
+// of it from the main inventory into the hotbar (the selected slot's stack goes back).
+async function hold (bot, p, name) {
+  const item = registry.itemsByName[name]
+  if (!item) throw new Error(`Minecraft ${settings.version} has no item named '${name}'`)
+  let slot = -1
+  for (let i = 0; i < 9 && slot < 0; i++) {
+    const s = p.inventory.slots[36 + i]
+    if (s && s.type === item.id && s.count > 0) slot = i
+  }
+  if (slot < 0) {
+    let from = -1
+    for (let i = 9; i < 36 && from < 0; i++) {
+      const s = p.inventory.slots[i]
+      if (s && s.type === item.id && s.count > 0) from = i
+    }
+    if (from < 0) throw new Error(`the bot carries no ${name}`)
+    slot = p.heldItemSlot
+    const held = p.inventory.slots[36 + slot]
+    p.inventory.updateSlot(36 + slot, p.inventory.slots[from])
+    p.inventory.updateSlot(from, held && held.type !== -1 ? held : null)
+    await until(() => { const s = bot.inventory.slots[36 + slot]; return s && s.type === item.id }, 3000, `the bot seeing ${name} in its hotbar`)
+  }
+  if (p.heldItemSlot !== slot) {
+    bot.setQuickBarSlot(slot)
+    await until(() => p.heldItemSlot === slot, 3000, 'the server seeing the new hotbar slot')
+  }
+  await until(() => { const s = bot.inventory.slots[36 + slot]; return s && s.type === item.id }, 3000, `the bot holding ${name}`)
+}
+
+// Jump and place a block where the feet were, as a player builds a pillar: the block goes
+// in once the feet are above it (a block is never placed into the player), then the bot
+// lands on it. A jump that came down before the block went in is tried again (3 jumps).
+async function pillar (bot, p, ref, face, dest, want, target) {
+  bot.physicsEnabled = true
+  const y0 = bot.entity.position.y
+  for (let tries = 0; tries < 3; tries++) {
+    await until(() => bot.entity.onGround, 3000, 'the bot standing before the jump', 5)
+    bot.setControlState('jump', true)
+    try {
+      await until(() => bot.entity.position.y > y0 + 1.02 && p.position.y > y0 + 1.02, 2000, 'the jump', 5)
+    } catch (err) {
+      bot.setControlState('jump', false)
+      continue
+    }
+    bot.setControlState('jump', false)
+    await bot._genericPlace(ref, face, { swingArm: 'right', forceLook: true })
+    const placed = async () => (await serv.overworld.getBlock(dest)).name === want
+    try {
+      await until(placed, 1500, 'the block under the bot')
+    } catch (err) {
+      console.error(`pillar: ${err.message}`)
+    }
+    if (await placed()) {
+      await land(bot, p, target)
+      return
+    }
+    await until(() => bot.entity.onGround, 3000, 'the bot landing after a jump', 5)
+  }
+  throw new Error(`the bot could not place ${want} under itself at ${dest} in 3 jumps`)
+}
+
+// Wait until the bot has landed in a cell and stopped, then step onto its centre.
+async function land (bot, p, target) {
+  await until(() => {
+    const v = bot.entity.velocity
+    return bot.entity.onGround && Math.abs(v.x) < 0.003 && Math.abs(v.z) < 0.003 &&
+      Math.abs(bot.entity.position.y - target.y) < 0.01
+  }, 4000, `the bot landing at y = ${target.y}`, 10)
+  bot.entity.position.set(target.x, bot.entity.position.y, target.z)
+  await until(() => p.position.distanceTo(target) < 0.01, 3000, 'the server seeing the bot in the new cell')
 }
 
 function hotbarFull (p) {
@@ -433,9 +596,9 @@ function hotbarFull (p) {
   return true
 }
 
-function countItem (p, name) {
+function countItem (p, name, everywhere = false) {
   let n = 0
-  for (let i = 0; i < 9; i++) {
+  for (let i = everywhere ? -27 : 0; i < 9; i++) {
     const slot = p.inventory.slots[36 + i]
     if (slot && slot.type !== -1 && registry.items[slot.type]?.name === name) n += slot.count
   }
@@ -444,15 +607,18 @@ function countItem (p, name) {
 
 // Walk one cell with Minecraft's physics: hold "forward" until the centre is near (the
 // bot glides the rest while friction stops it), then wait until it stands still there.
-async function walk (bot, p, target, yaw, pitch) {
+// With `jump`, the bot jumps as it walks (up onto the block in front); walking off an
+// edge, it falls onto the block below.
+async function walk (bot, p, target, yaw, pitch, jump = false) {
   await bot.look(mfYaw(yaw), mfPitch(pitch), true)
   // distance left along the walking direction (yaw 0 = +z, 90 = -x, 180 = -z, 270 = +x)
   const rad = yaw * Math.PI / 180
   const dir = new Vec3(-Math.round(Math.sin(rad)), 0, Math.round(Math.cos(rad)))
   const remaining = () => target.minus(bot.entity.position).dot(dir)
   bot.setControlState('forward', true)
+  if (jump) bot.setControlState('jump', true)
   try {
-    await until(() => remaining() < 0.25, 3000, 'walking to the next cell', 5)
+    await until(() => remaining() < 0.25 && (!jump || bot.entity.position.y > target.y - 0.3), 3000, 'walking to the next cell', 5)
   } catch (err) {
     const at = bot.entity.position
     const feet = bot.blockAt(target.floored())
@@ -461,10 +627,12 @@ async function walk (bot, p, target, yaw, pitch) {
       `its client sees ${feet ? feet.name : 'nothing'} and ${head ? head.name : 'nothing'} in the target cell`)
   } finally {
     bot.setControlState('forward', false)
+    bot.setControlState('jump', false)
   }
   await until(() => {
     const v = bot.entity.velocity
-    return bot.entity.onGround && Math.abs(v.x) < 0.003 && Math.abs(v.z) < 0.003
+    return bot.entity.onGround && Math.abs(v.x) < 0.003 && Math.abs(v.z) < 0.003 &&
+      (target.y === undefined || Math.abs(bot.entity.position.y - target.y) < 0.6)
   }, 3000, 'the bot stopping', 10)
   // Friction leaves the bot a few centimetres off the centre; step onto it, as a careful
   // player would, so that errors never add up into brushing a wall corner later.

@@ -200,9 +200,11 @@ class Bridge:
         person (set up by the server, recorded like a player): tests play a human with it."""
         return self.request("spawn_bot", username=username, person=person, timeout=40)
 
-    def setup(self, player: str | None, pose: dict, hotbar: list | None) -> dict:
+    def setup(self, player: str | None, pose: dict, hotbar: list | None, inventory: list | None = None) -> dict:
+        """Put a player into a cell with a view, a hotbar, and (for a model that counts
+        carried blocks) `inventory`: [[item, total], ...] spread over its 36 slots."""
         return self.request("setup", player=player, position=pose["position"], yaw=pose["yaw"],
-                            pitch=pose["pitch"], selected=pose["selected"], hotbar=hotbar)
+                            pitch=pose["pitch"], selected=pose["selected"], hotbar=hotbar, inventory=inventory)
 
     def observe(self, player: str | None = None, blocks: bool = True) -> dict:
         return self.request("observe", player=player, blocks=blocks)

@@ -20,7 +20,9 @@ from ..solvers import Budget, get_solver
 from ..solvers.options import check_options, options_of
 from .actions import changed_cells, geometry
 from .bridge import BOT, Bridge
-from .world import WorldMap, check_supported, describe, difference
+from .differences import known
+from .moves import controls
+from .world import WorldMap, check_playable, difference
 
 
 @dataclass
@@ -82,11 +84,20 @@ def prepare(bridge: Bridge, world: WorldMap, port: int, player: str = BOT) -> No
     bridge.start(port=port)
     bridge.build(world)
     bridge.spawn_bot(player)
-    bridge.setup(player, world.pose(world.model.initial), world.hotbar(world.model.initial))
+    args = world.setup_args(world.model.initial)
+    bridge.setup(player, args, args["hotbar"], args.get("inventory"))
 
 
-def observe_state(bridge: Bridge, world: WorldMap, player: str):
-    return world.parse(bridge.observe(player))
+def observe_state(bridge: Bridge, world: WorldMap, player: str, hint: bytes | None = None):
+    return world.parse(bridge.observe(player), hint)
+
+
+def requests(world: WorldMap, action: str, before: bytes, after: bytes) -> list:
+    """What the bot does for one action: the minecraft domain's controller by action (its
+    view and hotbar), else the generic one read from the states (moves.py)."""
+    if world.kind == "poses":
+        return [geometry(world, action, before, after)]
+    return controls(world, before, after)
 
 
 def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | None = None,
@@ -97,12 +108,12 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
     """Solve, execute in the world step by step, replan on divergence (the bot must be in
     the world at the dungeon's start: see `prepare`). `after_step(n, bridge)` lets a test
     disturb the world between steps."""
-    check_supported(model)
+    check_playable(model)
     world = WorldMap(model)
     budget = budget or Budget(time_limit=60)
     result = RunResult(model.name, solver)
     started = time.perf_counter()
-    parsed = observe_state(bridge, world, player)
+    parsed = observe_state(bridge, world, player, model.initial)
     state = parsed.state
     if state != model.initial:
         diffs = difference(model, model.initial, state)
@@ -148,15 +159,26 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
             result.status = "refused"
             result.message = f"step {step + 1}: {action} would kill the agent in bcc's rules; not executed"
             break
+        notes = []
+        if world.kind == "positions":
+            # where the real game differs from the model (differences.py): noted, or refused
+            notes, refusal = known(world, predicted)
+            earlier = set(known(world, state)[0])
+            notes = [n for n in notes if n not in earlier or "the agent stands" in n]
+            if refusal:
+                result.status = "refused"
+                result.message = f"step {step + 1}: {action}: {refusal}; not executed"
+                break
         step += 1
         t0 = time.perf_counter()
-        bridge.act(player, **geometry(world, action, state, predicted))
-        parsed = observe_state(bridge, world, player)
+        for request in requests(world, action, state, predicted):
+            bridge.act(player, **request)
+        parsed = observe_state(bridge, world, player, predicted)
         seconds = time.perf_counter() - t0
         diffs = difference(model, predicted, parsed.state)
-        result.steps.append(Step(step, action, predicted, parsed.state, seconds, diffs, parsed.notes))
-        log(f"{step:3d} {action:<14} {seconds * 1000:5.0f} ms  predicted {describe(model, predicted)}")
-        log(f"    {'':<14} {'':>8}  observed  {describe(model, parsed.state)}"
+        result.steps.append(Step(step, action, predicted, parsed.state, seconds, diffs, notes + parsed.notes))
+        log(f"{step:3d} {action:<14} {seconds * 1000:5.0f} ms  predicted {world.describe(predicted)}")
+        log(f"    {'':<14} {'':>8}  observed  {world.describe(parsed.state)}"
             + ("  = match" if not diffs else "  DIVERGED"))
         g = model.grid
         for x, y, z, old, new in changed_cells(model, state, predicted):
@@ -164,12 +186,12 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
             log(f"        block ({x}, {y}, {z}): {g.value_names[old]} -> {g.value_names[new]}, observed {seen}")
         for d in diffs[:6]:
             log(f"        {d}")
-        for n in parsed.notes[:4]:
+        for n in (notes + parsed.notes)[:4]:
             log(f"        note: {n}")
         state = parsed.state
         if after_step is not None:
             after_step(step, bridge)
-            parsed = observe_state(bridge, world, player)
+            parsed = observe_state(bridge, world, player, state)
             if parsed.state != state:
                 diffs = difference(model, state, parsed.state)
                 log(f"        the world changed after step {step}: {'; '.join(diffs[:4])}")
@@ -190,7 +212,7 @@ def run_dungeon(model: Model, port: int, solver: str = "astar", budget: Budget |
     (the bot then pauses between actions, and the world stays up a while at the end)."""
     from .bridge import VERSION
     from .record import wait_for_player
-    check_supported(model)
+    check_playable(model)
     t0 = time.perf_counter()
     with Bridge(log_path=log_path) as bridge:
         log(f"starting the Minecraft server on 127.0.0.1:{port} and building {model.name} ...")

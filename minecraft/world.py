@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 from ..errors import BccError
 from ..model import Model
@@ -23,8 +24,14 @@ DOWN_THRESHOLD = 30.0        # a person counts as looking down from here on
 
 # bcc block type -> Minecraft (1.16.5) block or item name; names not listed are the same
 # in both. burlap_stone was a custom block of BurlapCraft: stone is its closest relative.
-TO_MINECRAFT = {"gold": "gold_block", "burlap_stone": "stone"}
+# The others are the building domains' materials (MinePlanner's names), where Minecraft
+# 1.16.5 names a kind of wood, a colour or a flower.
+TO_MINECRAFT = {"gold": "gold_block", "burlap_stone": "stone", "planks": "oak_planks", "log": "oak_log",
+                "leaves": "oak_leaves", "wool": "white_wool", "diamond": "diamond_block", "fence": "oak_fence",
+                "flower": "dandelion", "wheat_seeds": "wheat"}
 FROM_MINECRAFT = {v: k for k, v in TO_MINECRAFT.items()}
+# the item that places a block, where Minecraft names it differently from the block
+ITEM_OF = {"wheat": "wheat_seeds"}
 
 _AGENT = ("agent.x", "agent.z", "agent.rotationalDirection", "agent.verticalDirection",
           "agent.selectedItem", "agent.alive")
@@ -38,8 +45,23 @@ def model_name(name: str) -> str:
     return FROM_MINECRAFT.get(name, name)
 
 
+def check_playable(model: Model) -> str:
+    """How the world shows a model: "poses" for the minecraft domain's agent (a view
+    direction and a hotbar: `check_supported`), "positions" for an agent that is a
+    position and a stock of blocks (positions.py); BccError, saying what cannot be shown,
+    for any other."""
+    from . import positions
+    labels = {v.label for v in model.variables}
+    if any(label in labels for label in _AGENT if label not in ("agent.x", "agent.z")):
+        check_supported(model)
+        return "poses"
+    positions.check(model)
+    return "positions"
+
+
 def check_supported(model: Model) -> None:
-    """The parser observes an agent, its hotbar and blocks; refuse models with more."""
+    """The pose parser observes an agent, its view, its hotbar and blocks; refuse models
+    with more (`bcc minecraft serve` and `record` play these only)."""
     labels = {v.label for v in model.variables}
     missing = [label for label in _AGENT if label not in labels]
     extra = sorted(label for label in labels if label not in _AGENT and label != "agent.y"
@@ -56,6 +78,46 @@ class WorldMap:
     """Where a compiled dungeon sits in the world, and how its state looks there."""
     model: Model
     origin: tuple = ORIGIN
+
+    @cached_property
+    def kind(self) -> str:
+        """"poses" (the minecraft domain's agent) or "positions" (see check_playable)."""
+        return check_playable(self.model)
+
+    @cached_property
+    def inventory(self):
+        from .inventory import derive
+        return derive(self.model)
+
+    def mc_name(self, value: str) -> str:
+        """The Minecraft block of a model value."""
+        return minecraft_name(value)
+
+    def model_value(self, mc: str) -> str | None:
+        """The model value a Minecraft block or item shows, or None: this model's values
+        first (stone is stone in a model that has stone, burlap_stone where that is the one)."""
+        return self._values.get(mc)
+
+    @cached_property
+    def _values(self) -> dict:
+        out = {}
+        for v in reversed(self.model.grid.value_names):
+            name = minecraft_name(v)
+            out[ITEM_OF.get(name, name)] = out[name] = v
+        return out
+
+    def setup_args(self, state: bytes) -> dict:
+        """The bridge's `setup` arguments that put the player into `state`."""
+        if self.kind == "positions":
+            from .positions import setup_args
+            return setup_args(self, state)
+        return {**self.pose(state), "hotbar": self.hotbar(state)}
+
+    def describe(self, state: bytes) -> str:
+        if self.kind == "positions":
+            from .positions import describe as short
+            return short(self, state)
+        return describe(self.model, state)
 
     @property
     def size(self) -> tuple:
@@ -84,6 +146,9 @@ class WorldMap:
         model: each type in the mutable layers is put in front of the agent (looking down,
         each starting hotbar slot selected in turn) and destroy_block is tried on it."""
         m, g = self.model, self.model.grid
+        if self.kind == "positions":
+            # the model decides what may be dug: the bot digs only where it predicts a block goes
+            return sorted({minecraft_name(v) for i, v in enumerate(g.value_names) if i != g.default})
         if "destroy_block" not in m.action_names:
             return []
         destroy = m.action_index("destroy_block")
@@ -133,9 +198,34 @@ class WorldMap:
             out.append([minecraft_name(kind), count] if kind != "air" and count > 0 else None)
         return out
 
-    def parse(self, obs: dict) -> "Parsed":
-        """The state parser: an observation from the bridge (player pose, hotbar and the
-        blocks of the dungeon's box) -> the model's state, plus what did not fit."""
+    def read_cells(self, obs: dict, state: bytearray, notes: list, back=None) -> None:
+        """The observed blocks of the dungeon's box into a dense state (`back`: Minecraft
+        name -> model value; this model's own values by default)."""
+        m, g = self.model, self.model.grid
+        back = back or (lambda mc: self.model_value(mc) or mc)
+        palette, cells = obs["palette"], obs["cells"]
+        area = g.width * g.depth
+        for yy in range(g.height):
+            for zz in range(g.depth):
+                for xx in range(g.width):
+                    mc = palette[cells[yy * area + zz * g.width + xx]]
+                    name = back(mc)
+                    if name not in g.value_names:
+                        notes.append(f"block ({xx}, {yy}, {zz}) is {mc}, which {m.name} does not know: read as air")
+                        name = "air"
+                    value = g.value_names.index(name)
+                    if yy in g.layers:
+                        state[g.base + g.layers.index(yy) * area + zz * g.width + xx] = value
+                    elif g.cell(m.initial, xx, yy, zz) != value:
+                        notes.append(f"block ({xx}, {yy}, {zz}) is {mc} in the world but cannot change in the model")
+
+    def parse(self, obs: dict, hint: bytes | None = None) -> "Parsed":
+        """The state parser: an observation from the bridge (player pose, hotbar or
+        inventory, and the blocks of the dungeon's box) -> the model's state, plus what did
+        not fit. `hint` (the predicted state) settles what the world does not show."""
+        if self.kind == "positions":
+            from .positions import parse
+            return Parsed(*parse(self, obs, hint))
         m = self.model
         g = m.grid
         notes = []
@@ -146,22 +236,8 @@ class WorldMap:
         feet = py - oy
         if not (0 <= x < g.width and 0 <= z < g.depth):
             raise BccError(f"the player is outside the dungeon, at world ({px:.1f}, {py:.1f}, {pz:.1f})")
-        palette, cells = obs["palette"], obs["cells"]
         state = bytearray(m.dense(m.initial))  # the dense layout (variables first, then every mutable cell)
-        area = g.width * g.depth
-        for yy in range(g.height):
-            for zz in range(g.depth):
-                for xx in range(g.width):
-                    mc = palette[cells[yy * area + zz * g.width + xx]]
-                    name = model_name(mc)
-                    if name not in g.value_names:
-                        notes.append(f"block ({xx}, {yy}, {zz}) is {mc}, which {m.name} does not know: read as air")
-                        name = "air"
-                    value = g.value_names.index(name)
-                    if yy in g.layers:
-                        state[g.base + g.layers.index(yy) * area + zz * g.width + xx] = value
-                    elif g.cell(m.initial, xx, yy, zz) != value:
-                        notes.append(f"block ({xx}, {yy}, {zz}) is {mc} in the world but cannot change in the model")
+        self.read_cells(obs, state, notes, model_name)
         yaw = obs["yaw"] % 360.0
         facing = int(round(yaw / 90.0)) % 4
         off = abs((yaw - 90.0 * round(yaw / 90.0)))

@@ -81,3 +81,45 @@ def test_a_busy_port_is_reported(bridge):
         s.listen()
         with pytest.raises(MinecraftError, match="in use"):
             bridge.start(port=s.getsockname()[1])
+
+
+def test_bot_builds_a_small_house_with_every_step_as_predicted(bridge, tmp_path):
+    # `bcc generate house` 3x3x3 (mason domain): walls, a door, a roof, 31 planks of 47 carried
+    from click.testing import CliRunner
+    from bcc.cli import main
+    from bcc.compiler.pipeline import compile_dungeon
+    path = tmp_path / "house.yaml"
+    assert CliRunner().invoke(main, ["generate", "house", "--width", "3", "--length", "3", "--height", "3",
+                                     "-o", str(path)]).exit_code == 0
+    m = compile_dungeon(path)
+    world = WorldMap(m)
+    prepare(bridge, world, free_port())
+    result = run(m, bridge, solver="build", budget=Budget(time_limit=30))
+    assert result.reached_goal, result.message
+    assert all(not s.differences for s in result.steps), [s.differences for s in result.steps if s.differences]
+    assert len(result.plans) == 1
+    # the world itself: the blueprint's 31 planks and 5 air cells (door and room), and the
+    # bot carries what is left: 47 - 31
+    obs = bridge.observe(BOT)
+    layers = ["###/#.#/#.#", "###/#.#/#.#", "###/#.#/###", "###/###/###"]
+    for y, layer in enumerate(layers):
+        for z, row in enumerate(layer.split("/")):
+            for x, ch in enumerate(row):
+                want = "oak_planks" if ch == "#" else "air"
+                assert cell_block(obs, 2 + x, 1 + y, 2 + z, world.size) == want, (x, y, z)
+    assert obs["inventory"] == {"oak_planks": 16}
+
+
+def test_bot_builds_a_builder_wall_walking_jumping_and_breaking(bridge):
+    from pathlib import Path
+    from bcc.compiler.pipeline import compile_dungeon
+    m = compile_dungeon(Path(__file__).parent / "builder" / "wall.yaml")
+    world = WorldMap(m)
+    prepare(bridge, world, free_port())
+    result = run(m, bridge, solver="build", budget=Budget(time_limit=30))
+    assert result.reached_goal, result.message
+    assert all(not s.differences for s in result.steps)
+    # MinePlanner's moves only: nothing hangs in the air, so no step carries a known difference
+    assert not any("known difference" in n for s in result.steps for n in s.notes)
+    obs = bridge.observe(BOT)
+    assert [cell_block(obs, x, y, 2, world.size) for y in (1, 2) for x in (1, 2, 3)] == ["stone"] * 6
