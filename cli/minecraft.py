@@ -106,9 +106,11 @@ def serve_cmd(dungeon, port, goal, out_dir, duration, db, as_json):
               help="Stop after this many actions.")
 @click.option("--watch", type=click.FloatRange(min=0), default=0.0, metavar="SECONDS",
               help="Wait up to SECONDS for a person to join and watch; the bot then pauses between actions.")
+@click.option("--picture", type=click.Path(dir_okay=False), default=None, metavar="FILE.svg",
+              help="At the end, draw the world as the server reports it (an isometric SVG).")
 @json_option
 @solver_flags(skip=("max_steps",))
-def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json, **solver_options):
+def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, picture, as_json, **solver_options):
     """Solve DUNGEON, then let a bot execute the plan in a real Minecraft server.
 
     Each step prints the model's prediction and the state parsed from the world; on a
@@ -122,14 +124,19 @@ def run_cmd(dungeon, solver, port, goal, time_limit, max_steps, watch, as_json, 
     get_solver(solver)   # an unknown solver or option is bad input, before starting anything
     options = solver_request(solver, solver_options)
     model = compile_model(dungeon, goal)
+    if picture:
+        from ..atomic import check_writable
+        check_writable(picture)     # before the run, not after it
     if pick:             # bcc solve's default, by the goal (solvers.default_solver)
         solver = default_solver(model)
         options = solver_request(solver, {})
     budget = Budget(time_limit=time_limit, max_memory_mb=Budget.default().max_memory_mb)
     out = (lambda line: click.echo(line, err=True)) if as_json else click.echo
     result = run_dungeon(model, port, solver=solver, budget=budget, log=out, log_path=_log_path(port),
-                         max_steps=max_steps, watch=watch, solver_options=options)
+                         max_steps=max_steps, watch=watch, solver_options=options, picture=picture)
     data = result.to_json(model)
+    if picture:
+        data["picture"] = picture
     if as_json:
         emit_json(data)
     else:

@@ -206,10 +206,12 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
 
 def run_dungeon(model: Model, port: int, solver: str = "astar", budget: Budget | None = None,
                 log: Callable[[str], None] = lambda line: None, log_path=None, watch: float = 0.0,
-                **options) -> RunResult:
+                picture=None, **options) -> RunResult:
     """Everything for `bcc minecraft run`: a bridge, the server, the bot, the closed loop.
     With `watch` > 0, first wait up to that many seconds for a person to join and watch
-    (the bot then pauses between actions, and the world stays up a while at the end)."""
+    (the bot then pauses between actions, and the world stays up a while at the end).
+    With `picture` (a path), the world as the server reports it at the end is drawn there
+    as an SVG (picture.py)."""
     from .bridge import VERSION
     from .record import wait_for_player
     check_playable(model)
@@ -228,6 +230,13 @@ def run_dungeon(model: Model, port: int, solver: str = "astar", budget: Budget |
             options.setdefault("delay", 0.6)
         result = run(model, bridge, solver=solver, budget=budget, log=log, **options)
         result.setup_seconds = setup
+        if picture:
+            from ..atomic import write_text
+            from .picture import svg
+            world = WorldMap(model)
+            write_text(picture, svg(bridge.observe(BOT), world.size, world.origin,
+                                    title=f"{model.name}: {result.message}"))
+            log(f"the world as the server reports it: {picture}")
         if watch > 0:
             time.sleep(min(10.0, watch))
     return result

@@ -259,3 +259,14 @@ def house_cells(m):
                 full = y == 3
                 out.append(((2 + x, 1 + y, 2 + z), full or (wall and not door)))
     return out
+
+
+def test_the_picture_draws_the_visible_faces_and_the_player():
+    from bcc.minecraft.picture import svg
+    # a 1 x 2 x 1 box: two planks stacked; the lower one's top touches the upper one, so
+    # 2 + 3 faces are drawn, and the player's three (top, south, east)
+    obs = {"palette": ["oak_planks"], "cells": [0, 0], "position": [10.5, 70.0, 20.5]}
+    text = svg(obs, (1, 2, 1), (10, 64, 20), title="a <tower>")
+    assert text.count("<polygon") == 5 + 3
+    assert text.count('fill="#b8945f"') == 1          # one top (the upper block's) in the full colour
+    assert "a &lt;tower&gt;" in text and text.startswith("<svg")
