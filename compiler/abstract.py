@@ -74,7 +74,7 @@ class Abstract:
             for y in ys:
                 out |= self.layer(y)
             return frozenset(out)
-        if self.box is not None:    # every cell of the box at once (reachability: ~2 M calls a house)
+        if self.box is not None:    # every cell of the box at once (reachability: ~2 M cell reads on a big structure)
             return self.box(xs, ys, zs)
         out = set()
         for x, y, z in itertools.product(xs, ys, zs):

@@ -1,6 +1,6 @@
 """An on-disk cache of loaded dungeons (their YAML read and their domain's expressions
 parsed), so a warm `bcc solve` skips YAML, lark and the grammar; of loaded domains, so a
-new dungeon on a known domain (a generated house) parses only itself; and of costly
+new dungeon on a known domain (a generated structure) parses only itself; and of costly
 analyses of a compiled model (`cached_analysis`: the pattern database).
 
 Like `.pyc` files: safe to delete, rebuilt when stale, never trusted across versions.

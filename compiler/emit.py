@@ -94,6 +94,11 @@ class Emitter(LayerExpanders):
         def out_of_range(label, v, lo, hi):
             raise ModelError(f"{label} would become {v}, outside its range [{lo}, {hi}]")
 
+        def divide(a, b, modulo, label):
+            if not b:
+                raise ModelError(label)   # "file:line:col: `//` by zero"
+            return a % b if modulo else a // b
+
         expanded: dict = {}   # diff -> cells; generated code reads it first (`_CC.get`)
         keep = max(1024, (16 << 20) // max(1, len(S0)))   # about 16 MB of expansions at most
 
@@ -177,7 +182,7 @@ class Emitter(LayerExpanders):
             n += diff[4 * pos:]
             return bytes(n)
 
-        self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _cells=cells,
+        self.ns.update(_cell=cell, _set_cell=set_cell, _index=index, _range=out_of_range, _divide=divide, _cells=cells,
                        _merge=merge, _S0=S0, _expand=expand, _CC=expanded, _from_bytes=int.from_bytes, _derive=derive)
 
     # ---- expressions -------------------------------------------------------------------
@@ -220,6 +225,13 @@ class Emitter(LayerExpanders):
                 return a[0] - b[1], a[1] - b[0]
         return None
 
+    def _nonzero(self, node) -> bool:
+        """The divisor can never be 0 (a constant, or a value whose bounds exclude it)."""
+        if isinstance(node, ir.Const):
+            return node.value != 0
+        bounds = self.interval(node)
+        return bounds is not None and (bounds[0] > 0 or bounds[1] < 0)
+
     def ex(self, node) -> str:
         if isinstance(node, ir.Const):
             return repr(bool(node.value)) if node.type == "bool" else str(int(node.value))
@@ -242,6 +254,8 @@ class Emitter(LayerExpanders):
                 idx = f"_index({idx}, {len(node.table)}, {node.label!r})"
             return f"{self.table(node.table)}[{idx}]"
         if isinstance(node, ir.Arith):
+            if node.op in ("//", "%") and not self._nonzero(node.right):
+                return f"_divide({self.ex(node.left)}, {self.ex(node.right)}, {node.op == '%'}, {node.label!r})"
             return f"({self.ex(node.left)} {node.op} {self.ex(node.right)})"
         if isinstance(node, ir.Neg):
             return f"(-{self.ex(node.operand)})"

@@ -368,9 +368,11 @@ class Grounder:
             raise ctx.error(node, "division by zero")
         if isinstance(left, ir.Const) and isinstance(right, ir.Const):
             a, b = left.value, right.value
-            return ir.Const({"+": a + b, "-": a - b, "*": a * b, "//": a // b if b else 0, "%": a % b if b else 0}[node.op], "int")
+            return ir.Const({"+": a + b, "-": a - b, "*": a * b, "//": a // b, "%": a % b}[node.op], "int")
         if node.op in "+-" and isinstance(right, ir.Const) and right.value == 0:
             return left
+        if node.op in ("//", "%") and not isinstance(right, ir.Const):   # its place, should it be 0 at run time
+            return ir.Arith(node.op, left, right, "int", str(ctx.error(node, f"`{node.op}` by zero")))
         return ir.Arith(node.op, left, right)
 
     def x_Compare(self, node, ctx, hint):

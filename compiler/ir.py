@@ -81,6 +81,7 @@ class Arith:
     left: object
     right: object
     type: str = "int"
+    label: str = ""     # `//` and `%` by a value: where the text is, for a division by zero at run time
 
 
 @dataclass(frozen=True)

@@ -245,8 +245,8 @@ class _Builder:
     def _starved(self, state, value) -> bool:
         """Writing `value` takes more of a variable than the state holds, and no gathering
         walk found a way to raise it (`exhausted`): the atom's greedy search, whose h is
-        the walk alone, cannot get it either (crafting_wall: 4 x 4,000 expansions for
-        nothing), so the atom waits for the gbfs fallback."""
+        the walk alone, cannot get it either (where the blocks must first be made from
+        others: 4 x 4,000 expansions for nothing), so the atom waits for the gbfs fallback."""
         return any(var in self.exhausted and self.supplies.value(state, var) < k
                    for var, k in self.supplies.uses.get(value, ()))
 

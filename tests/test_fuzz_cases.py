@@ -202,3 +202,28 @@ def test_no_internal_error_is_reported_as_bad_input():
                                                  "minecraft") for p in (root / d).glob("*.py"))]
     offenders = [str(p.relative_to(root)) for p in sources if 'BccError(f"internal' in p.read_text(encoding="utf-8")]
     assert not offenders, offenders
+
+
+@pytest.mark.parametrize("op", ["//", "%"])
+def test_a_division_by_zero_at_run_time_is_a_positioned_domain_error(op, tmp_path):
+    """`a.x - a.x` is 0 in every state but is no constant the compiler folds: the first
+    look_down divides by it. A domain error at the division's place, exit 2 (it was a
+    ZeroDivisionError, exit 3)."""
+    domain = MINECRAFT.replace("effect: a.verticalDirection = 1", f"effect: a.verticalDirection = 1 {op} (a.x - a.x)")
+    assert domain != MINECRAFT
+    (tmp_path / "dom.yaml").write_text(domain, encoding="utf-8")
+    path = tmp_path / "case.yaml"
+    path.write_text(BRIDGE.replace("domain: minecraft", "domain: dom.yaml"), encoding="utf-8")
+    outcome = run_cli(["solve", str(path), "--solver", "bfs"])
+    assert outcome.kind == "bad-input", (outcome.kind, outcome.detail, outcome.site)
+    assert re.search(rf"dom\.yaml:\d+:\d+: `{re.escape(op)}` by zero", outcome.detail), outcome.detail
+
+
+def test_a_divisor_whose_bounds_exclude_zero_is_divided_directly(tmp_path):
+    from bcc.compiler import compile_dungeon
+    domain = MINECRAFT.replace("effect: a.verticalDirection = 1", "effect: a.verticalDirection = 1 // (a.x + 1)")
+    (tmp_path / "dom.yaml").write_text(domain, encoding="utf-8")
+    path = tmp_path / "case.yaml"
+    path.write_text(BRIDGE.replace("domain: minecraft", "domain: dom.yaml"), encoding="utf-8")
+    source = compile_dungeon(str(path)).source
+    assert " // " in source and "_divide(" not in source
