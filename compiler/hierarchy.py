@@ -32,7 +32,7 @@ from .ground import Ctx, KeyRef, ObjRef
 from .source import Origin
 
 ROOT = "root"   # the name the decomposition tree gives the dungeon's own network
-SHARED_HELPERS = ("_cell", "_set_cell", "_index", "_range", "_cells", "_merge", "_S0", "_expand", "_CC", "SG")
+SHARED_HELPERS = ("_cell", "_set_cell", "_index", "_range", "_divide", "_cells", "_merge", "_S0", "_expand", "_CC", "SG")
 
 
 @dataclass(frozen=True)

@@ -206,6 +206,14 @@ def test_method_type_errors_are_refused_when_a_dungeon_is_compiled(cli, tmp_path
     assert message in first and first.startswith(f"{tmp_path / 'd.yaml'}:{line + 2}:"), first
 
 
+def test_a_method_dividing_by_zero_is_a_domain_error_at_its_place(cli, tmp_path):
+    # agent.x - agent.x is 0 in every state and no constant the compiler folds
+    domain_file(tmp_path, "tasks:\n  t: {}\nmethods:\n  m: {task: t, pre: 1 // (agent.x - agent.x) == 0, subtasks: []}\n")
+    out = cli("solve", str(dungeon_file(tmp_path, "t()")))
+    assert out.exit_code == 2, out.output
+    assert f"{tmp_path / 'd.yaml'}:6:" in out.output and "`//` by zero" in out.output
+
+
 def test_a_bad_task_in_a_dungeon_is_refused_at_its_place(cli, tmp_path):
     domain_file(tmp_path, "tasks:\n  t: {params: {n: int}}\nmethods:\n  m: {task: t, subtasks: []}\n")
     path = dungeon_file(tmp_path, "t(1, 2)")
