@@ -480,6 +480,12 @@ async function act ({ player, kind, yaw, pitch, slot, target, block, reference, 
       await withTimeout(bot.dig(b, true), 10000, 'digging')
     }
     await until(async () => (await serv.overworld.getBlock(pos)).name === 'air', 3000, 'the mined block disappearing')
+    if (instant) {
+      // the server tells every player but the digger (its client predicts its own digs):
+      // tell the bot's client too, or it would still collide with the block
+      p.sendBlock(pos, 0)
+      await until(() => { const seen = bot.blockAt(pos); return !seen || seen.name === 'air' }, 3000, 'the bot seeing the block gone')
+    }
     // it reaches the inventory in the same tick, unless it is full (then it is lost)
     await until(() => countItem(p, b.name, !view) > before || hotbarFull(p), 1000, 'the mined block reaching the inventory')
     if (view) {

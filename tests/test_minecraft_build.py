@@ -164,22 +164,22 @@ def states_of(model, plan):
 def test_controls_follow_what_the_model_changes():
     m = compile_dungeon(WALL)
     w = WorldMap(m)
-    # from the start (0, 1, 0): east, east, south to (2, 1, 1); place stone south at feet
-    # level on the floor; jump south onto it; drop north again; west; break the dirt south
-    plan = ["move_east", "move_east", "move_south", "place_south(agent, stones)", "jump_south", "drop_north",
-            "move_west", "break_south"]
+    # from the start (0, 1, 0), walled in but for the dirt east under a low ceiling: break
+    # it, walk east through its cell, south to (1, 1, 1); place stone south at feet level
+    # on the floor; jump south onto it; drop north again
+    plan = ["break_east", "move_east", "move_south", "place_south(agent, stones)", "jump_south", "drop_north"]
     s = states_of(m, plan)
     steps = [controls(w, a, b) for a, b in zip(s, s[1:])]
     ox, oy, oz = ORIGIN
-    assert steps[0] == [{"kind": "walk", "target": [ox + 1.5, oy + 1, oz + 0.5], "yaw": 270.0, "pitch": 0.0,
+    assert steps[0] == [{"kind": "dig", "block": [ox + 1, oy + 1, oz], "instant": True, "hover": False}]
+    assert steps[1] == [{"kind": "walk", "target": [ox + 1.5, oy + 1, oz + 0.5], "yaw": 270.0, "pitch": 0.0,
                          "jump": False, "hover": False}]
     assert steps[2][0]["yaw"] == 0.0
     place = steps[3][0]
     assert (place["kind"], place["at"], place["reference"], place["face"], place["item"]) == \
-        ("place", [ox + 2, oy + 1, oz + 2], [ox + 2, oy, oz + 2], [0, 1, 0], "stone")
+        ("place", [ox + 1, oy + 1, oz + 2], [ox + 1, oy, oz + 2], [0, 1, 0], "stone")
     assert steps[4][0]["kind"] == "walk" and steps[4][0]["jump"] and steps[4][0]["target"][1] == oy + 2
     assert steps[5][0]["kind"] == "walk" and not steps[5][0]["jump"] and steps[5][0]["target"][1] == oy + 1
-    assert steps[7] == [{"kind": "dig", "block": [ox + 1, oy + 1, oz + 2], "instant": True, "hover": False}]
 
 
 def test_mason_moves_climb_hang_and_come_down(house):
@@ -211,7 +211,8 @@ def test_mason_moves_climb_hang_and_come_down(house):
 
 
 def test_flowing_water_is_a_known_difference(tmp_path):
-    text = WALL.read_text().replace('"d": [bedrock, dirt]', '"d": [bedrock, water]')
+    text = WALL.read_text().replace('"d": [bedrock, dirt, air, bedrock]', '"d": [bedrock]\n  "w": [bedrock, water]').replace(
+        "  .....\n  .....\n", "  .w...\n  .....\n", 1)
     (tmp_path / "water.yaml").write_text(text)
     m = compile_dungeon(tmp_path / "water.yaml")
     w = WorldMap(m)
