@@ -176,7 +176,7 @@ def test_fast_downward_exit_codes_map_to_statuses(monkeypatch, tmp_path, code, s
     import subprocess
     from bcc.solvers import fast_downward
     monkeypatch.setattr(fast_downward, "driver", lambda: tmp_path / "fast-downward.py")
-    monkeypatch.setattr(subprocess, "run", lambda *a, **k: subprocess.CompletedProcess(a, code, "", "log line"))
+    monkeypatch.setattr(fast_downward, "_bounded", lambda cmd, cwd, limit: subprocess.CompletedProcess(cmd, code, "", "log line"))
     assert fast_downward.run("d.pddl", "p.pddl", time_limit=1).status == status
 
 
