@@ -104,7 +104,6 @@ def derive(model) -> Inventory | None:
     if c is None:
         return None
     g = model.grid
-    value_type = None
     counts: dict = {}                        # StateVar -> (material index, unit)
     position = set(c.position_vars)
     repacks = []
@@ -113,7 +112,6 @@ def derive(model) -> Inventory | None:
         sets = [e for e in a.effects if isinstance(e, ir.SetVar)]
         for e in cells:
             if isinstance(e.value, ir.Const):
-                value_type = value_type or e.value.type
                 if e.value.value != g.default:
                     taken = [s.var for s in sets if _taken(s.value, s.var) == 1]
                     if len(taken) == 1:

@@ -271,3 +271,35 @@ def test_the_picture_draws_the_visible_faces_and_the_player():
     assert text.count("<polygon") == 5 + 3
     assert text.count('fill="#b8945f"') == 1          # one top (the upper block's) in the full colour
     assert "a &lt;tower&gt;" in text and text.startswith("<svg")
+
+
+def test_the_world_wins_when_someone_takes_a_placed_block(house):
+    fake = FakeWorld()
+    prepare(fake, WorldMap(house), port=0)
+    taken = []
+
+    def take(step, bridge):
+        # after the first placement, someone breaks that block and keeps it
+        if not taken:
+            placed = [c for c, name in bridge.blocks.items() if name == "oak_planks"]
+            if placed:
+                taken.append(placed[0])
+                del bridge.blocks[placed[0]]
+
+    lines = []
+    result = run(house, fake, solver="build", after_step=take, log=lines.append)
+    assert result.reached_goal, result.message
+    assert len(taken) == 1 and len(result.plans) == 2
+    assert any("the world changed after step" in line for line in lines)
+    assert all(not s.differences for s in result.steps)
+    assert fake.blocks[taken[0]] == "oak_planks"          # built again
+
+
+def test_a_dungeon_the_world_cannot_show_is_one_line_and_exit_2(tmp_path):
+    text = WALL.read_text().replace(
+        "stock:\n", "items:\n  - {name: a_log, kind: log, at: [4, 1, 0]}\nstock:\n  - {name: logs, kind: log, count: 0}\n")
+    (tmp_path / "items.yaml").write_text(text)
+    r = CliRunner().invoke(main, ["minecraft", "run", str(tmp_path / "items.yaml")])
+    assert r.exit_code == 2
+    lines = r.output.strip().splitlines()
+    assert len(lines) == 1 and "its state has a_log.present, which a Minecraft world cannot show" in lines[0]
