@@ -13,6 +13,9 @@ on every predicted state of `bcc minecraft run` and says, for that state:
   the game the current would carry the agent where the model cannot say.
 - **falling blocks**: sand or gravel over an empty cell would fall (the server does not
   do that either).
+- **water is no block**: the model may place a block on top of water or mine water; in
+  Minecraft a block is placed only against a solid face, and water is taken with a
+  bucket. Such a step is refused.
 """
 from __future__ import annotations
 
@@ -51,6 +54,28 @@ def flows(world: WorldMap, state: bytes) -> list:
                             and g.cell(state, *n) == g.default:
                         out.append(((x, y, z), n))
     return out
+
+
+def known_step(world: WorldMap, before: bytes, after: bytes) -> tuple:
+    """(notes, refusal) for one predicted step: the known differences of the state it
+    leads to that were not there before (the agent's fall each time), and why the step
+    must not be executed (or None)."""
+    from .actions import changed_cells
+    from .moves import solid
+    g = world.model.grid
+    notes, refusal = known(world, after)
+    earlier = set(known(world, before)[0])
+    notes = [n for n in notes if n not in earlier or "the agent stands" in n]
+    for x, y, z, old, new in changed_cells(world.model, before, after):
+        if new == g.default and world.mc_name(g.value_names[old]) in ("water", "lava"):
+            refusal = refusal or (f"the model mines the {g.value_names[old]} at {(x, y, z)}; in Minecraft a "
+                                  "liquid is not mined (a bucket takes it)")
+        elif new != g.default and not any(solid(world, before, x + dx, y + dy, z + dz)
+                                          for dx, dy, dz in SIDES + ((0, 1, 0),)):
+            refusal = refusal or (f"the model places {g.value_names[new]} at {(x, y, z)}, where no solid block "
+                                  "touches it (the model counts water as a block); in Minecraft a block is "
+                                  "placed only against a solid face")
+    return notes, refusal
 
 
 def known(world: WorldMap, state: bytes) -> tuple:

@@ -20,7 +20,7 @@ from ..solvers import Budget, get_solver
 from ..solvers.options import check_options, options_of
 from .actions import changed_cells, geometry
 from .bridge import BOT, Bridge
-from .differences import known
+from .differences import known_step
 from .moves import controls
 from .world import WorldMap, check_playable, difference
 
@@ -162,9 +162,7 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
         notes = []
         if world.kind == "positions":
             # where the real game differs from the model (differences.py): noted, or refused
-            notes, refusal = known(world, predicted)
-            earlier = set(known(world, state)[0])
-            notes = [n for n in notes if n not in earlier or "the agent stands" in n]
+            notes, refusal = known_step(world, state, predicted)
             if refusal:
                 result.status = "refused"
                 result.message = f"step {step + 1}: {action}: {refusal}; not executed"

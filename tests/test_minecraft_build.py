@@ -303,3 +303,21 @@ def test_a_dungeon_the_world_cannot_show_is_one_line_and_exit_2(tmp_path):
     assert r.exit_code == 2
     lines = r.output.strip().splitlines()
     assert len(lines) == 1 and "its state has a_log.present, which a Minecraft world cannot show" in lines[0]
+
+
+def test_water_is_no_block_to_build_on_or_to_mine(tmp_path):
+    from bcc.minecraft.differences import known_step
+    # water at feet level at (1, 1, 2), and a water floor under (2, 1, 2)
+    text = WALL.read_text().replace('"d": [bedrock, dirt, air, bedrock]', '"d": [bedrock]\n  "w": [bedrock, water]\n  "v": [water]').replace(
+        "  .....\n  .....\n", "  .wv..\n  .....\n", 1).replace(
+        "stock:\n", "stock:\n  - {name: water_stock, kind: water, count: 0}\n")
+    (tmp_path / "pond.yaml").write_text(text)
+    m = compile_dungeon(tmp_path / "pond.yaml")
+    w = WorldMap(m)
+    s = states_of(m, ["move_east", "move_east", "move_south"])          # at (2, 1, 1), facing the pond
+    placed = m.apply(m.action_index("place_south(agent, stones)"), s[-1])
+    assert placed is not None                                           # the model builds on water ...
+    assert "no solid block touches it" in known_step(w, s[-1], placed)[1]   # ... Minecraft does not
+    s = states_of(m, ["move_east", "move_south"])                       # at (1, 1, 1): the water south
+    mined = m.apply(m.action_index("break_south"), s[-1])
+    assert mined is not None and "a liquid is not mined" in known_step(w, s[-1], mined)[1]
