@@ -92,44 +92,68 @@ def train_cmd(db, with_corpus, pairs_paths, dungeon, output, time_limit, max_mem
 
 
 def _train(db, with_corpus, pairs_paths, dungeon, output, as_json):
-    from ..grounding import corpus, pairs
+    from ..grounding import corpus, pairs, task_pairs
     from ..grounding.dataset import Dataset
     from ..grounding.learn import candidates, train
-    rows = []
+    rows, task_rows = [], []
     for path in pairs_paths:
         given = pairs.load(path, dungeon)
         _say_inferred(path, given)
-        pairs.check_tasks(given)
+        calls = [r for r in given if task_pairs.is_task_row(r)]   # a dungeon with tasks: task calls
+        goals = [r for r in given if r not in calls]
+        task_pairs.check(calls)
+        pairs.check_tasks(goals)
+        task_rows += calls
         rows += [{"command": r["command"], "dungeon": r["dungeon"], "explanations": [{"task": r["task"], "weight": 1.0}]}
-                 for r in given]
+                 for r in goals]
+    if task_rows and with_corpus:
+        task_rows += task_pairs.shipped_rows()
     if output:
         from ..atomic import check_writable
         check_writable(output)
     data = Dataset(db)
+    model = task_model = None
     try:
         rows = data.pairs() + rows
         if with_corpus:
             rows += [r | {"dungeon": corpus.resolve(r["dungeon"])} for r in corpus.load() if r["split"] == "train"]
-        if not rows:
+        if not rows and not task_rows:
             raise BccError("the dataset has no pairs: add some with `bcc learn`, or pass --corpus or --pairs FILE",
                            str(data.path))
-        model, seconds = train(rows, candidates_of=lambda r: corpus.candidates(r) if "prefix" in r
-                               else candidates(r["dungeon"]))
-        data.add_model(model.to_json(), len(rows), with_corpus, seconds)
+        if output and rows and task_rows:
+            raise BccError("-o writes one model: train goal pairs and task-call pairs apart")
+        if rows:
+            model, seconds = train(rows, candidates_of=lambda r: corpus.candidates(r) if "prefix" in r
+                                   else candidates(r["dungeon"]))
+            data.add_model(model.to_json(), len(rows), with_corpus, seconds)
+        if task_rows:
+            task_model, task_seconds = task_pairs.train(task_rows)
+            data.add_model(task_model.to_json(), len(task_rows), with_corpus, task_seconds)
     finally:
         data.close()
     if output:
-        model.save(output)
+        (model or task_model).save(output)
+    report = {"db": str(data.path), "output": output, "with_corpus": with_corpus}
+    if model is not None:
+        report |= {"pairs": len(rows), "vocabulary": len(model.vocabulary), "iterations": model.iterations,
+                   "seconds": round(seconds, 3)}
+    if task_model is not None:
+        report |= {"task_pairs": len(task_rows), "task_vocabulary": len(task_model.speller.counts),
+                   "task_seconds": round(task_seconds, 3)}
     if as_json:
-        emit_json({"pairs": len(rows), "vocabulary": len(model.vocabulary), "iterations": model.iterations,
-                   "seconds": round(seconds, 3), "with_corpus": with_corpus, "db": str(data.path), "output": output})
+        emit_json(report)
         return
-    click.echo(f"trained on {len(rows)} pair(s), {len(model.vocabulary)} words, {model.iterations} iterations "
-               f"in {seconds:.2f} s; stored in {data.path}")
-    if not with_corpus:
-        trained = sorted({r["dungeon"] for r in rows})
-        click.echo(f"note: this model replaces the shipped one and knows commands for {', '.join(trained)} only; "
-                   f"--corpus also trains on the shipped corpus (the other dungeons)", err=True)
+    if model is not None:
+        click.echo(f"trained on {len(rows)} pair(s), {len(model.vocabulary)} words, {model.iterations} iterations "
+                   f"in {seconds:.2f} s; stored in {data.path}")
+        if not with_corpus:
+            trained = sorted({r["dungeon"] for r in rows})
+            click.echo(f"note: this model replaces the shipped one and knows commands for {', '.join(trained)} only; "
+                       f"--corpus also trains on the shipped corpus (the other dungeons)", err=True)
+    if task_model is not None:
+        click.echo(f"trained a task-call model on {len(task_rows)} pair(s) "
+                   f"({', '.join(sorted({r['dungeon'] for r in task_rows}))}) in {task_seconds:.2f} s; "
+                   f"stored in {data.path}")
 
 
 def _translation(db, model_path):
@@ -137,20 +161,50 @@ def _translation(db, model_path):
     from pathlib import Path
 
     from ..grounding.dataset import Dataset, default_path
-    from ..grounding.models import from_json, load
+    from ..grounding.models import GOAL_FORMATS, from_json, load
     if model_path:
-        return load(model_path), model_path
+        model = load(model_path)
+        if type(model).__name__ == "TaskCallModel":
+            raise BccError("this is a task-call model: it commands a dungeon whose domain has tasks", model_path)
+        return model, model_path
     path = Path(db) if db else default_path()
     if path.is_file():
         data = Dataset(path)
         try:
-            latest = data.latest_model()
+            latest = data.latest_model(GOAL_FORMATS)
         finally:
             data.close()
         if latest is not None:
             return from_json(latest, str(path)), str(path)
     from ..grounding import corpus
     return corpus.corpus_model(), "shipped corpus"
+
+
+def _task_model(db, model_path):
+    """The task-call model of a dungeon with tasks: --model FILE, else the dataset's newest
+    task-call model, else the one trained on the shipped task pairs."""
+    from pathlib import Path
+
+    from ..grounding import task_pairs
+    from ..grounding.dataset import Dataset, default_path
+    from ..grounding.models import from_json, load
+    from ..grounding.task_model import FORMAT, TaskCallModel
+    if model_path:
+        model = load(model_path)
+        if not isinstance(model, TaskCallModel):
+            raise BccError("this is a goal model; a dungeon whose domain has tasks is commanded by a task-call "
+                           "model (bcc train --pairs FILE of task calls -o FILE)", model_path)
+        return model, model_path
+    path = Path(db) if db else default_path()
+    if path.is_file():
+        data = Dataset(path)
+        try:
+            latest = data.latest_model((FORMAT,))
+        finally:
+            data.close()
+        if latest is not None:
+            return from_json(latest, str(path)), str(path)
+    return task_pairs.shipped_model(), "shipped task pairs"
 
 
 @click.command("command")
@@ -165,26 +219,24 @@ def _translation(db, model_path):
 def command_cmd(dungeon, text, db, model_path, time_limit, max_memory, as_json):
     """Interpret a natural-language command in DUNGEON and plan it.
 
-    Exit 0 when the chosen task is solved; 1 when no task is plausible, it has no plan or
-    a budget ran out."""
+    In a dungeon whose domain has tasks the command becomes a task call, planned by htn
+    ("build a 3 by 4 wall of stone" -> wall(1, 1, 3, 4, stone)); elsewhere a goal, planned
+    by A*. Exit 0 when the chosen task is solved; 1 when none is plausible, it has no plan
+    or a budget ran out."""
     from ..solvers.limits import Deadline
-    from ..grounding.interpret import plan, rank
-    from ..grounding.learn import space_for
+    from ..grounding.task_pairs import space_for as call_space
     if not text.strip():
         raise BccError("the command is empty")
     with within_budget(time_limit, max_memory, as_json, dungeon, grace=None) as budget:
         deadline = Deadline(budget)
-        model = compile_model(dungeon, None)
-        translation, source = _translation(db, model_path)   # may train a model: counted too
-        space = space_for(dungeon)
-        found = rank(translation, space, model.initial, text, unseen_names_refused=True)
-        if found.task is not None:
-            found.result = plan(dungeon, found.task, None, deadline.remaining())
-            if not found.result.solved:
-                found.message = f"no plan for {found.task}: {found.result.message}"
+        calls = call_space(dungeon)      # the front end only: a dungeon with tasks is commanded by them
+        if calls:
+            found, name, where, source = _command_task(dungeon, text, calls, db, model_path, deadline)
+        else:
+            found, name, where, source = _command_goal(dungeon, text, db, model_path, deadline)
     ok = found.result is not None and found.result.solved
     if as_json:
-        emit_json({"dungeon": model.name, **found.to_json(), "model": source})
+        emit_json({"dungeon": name, **found.to_json(), "model": source})
         sys.exit(EXIT_OK if ok else EXIT_NO_SOLUTION)
     def say(line):   # the plan alone goes to stdout, as with `bcc solve`
         click.echo(line, err=True)
@@ -198,7 +250,39 @@ def command_cmd(dungeon, text, db, model_path, time_limit, max_memory, as_json):
         say(f"  {s:8.4f}  {t}")
     if found.unknown_words:
         say(f"unknown words (ignored): {', '.join(found.unknown_words)}")
-    sys.exit(print_result(found.result, model.name, model.path, False))
+    sys.exit(print_result(found.result, name, where, False))
+
+
+def _command_goal(dungeon, text, db, model_path, deadline):
+    """A goal of the dungeon (grounding/tasks.py's candidates), planned by A*."""
+    from ..grounding.interpret import plan, rank
+    from ..grounding.learn import space_for
+    model = compile_model(dungeon, None)
+    translation, source = _translation(db, model_path)   # may train a model: counted too
+    space = space_for(dungeon)
+    found = rank(translation, space, model.initial, text, unseen_names_refused=True)
+    if found.task is not None:
+        found.result = plan(dungeon, found.task, None, deadline.remaining())
+        if not found.result.solved:
+            found.message = f"no plan for {found.task}: {found.result.message}"
+    return found, model.name, model.path, source
+
+
+def _command_task(dungeon, text, calls, db, model_path, deadline):
+    """A call of one of the domain's tasks (grounding/calls.py), planned by htn through the
+    run path `bcc solve` takes."""
+    from ..run import Request, run
+    model, source = _task_model(db, model_path)
+    found = model.interpret(text, calls)
+    where = dungeon
+    if found.task is not None:
+        ran = run(Request(lambda: compile_model(dungeon, None, found.task), "htn", budget=deadline.remaining(),
+                          hard=False))
+        found.result = ran.result
+        where = ran.model.path if ran.model is not None else dungeon
+        if not found.result.solved:
+            found.message = f"no plan for {found.task}: {found.result.message}"
+    return found, calls.name, where, source
 
 
 @click.group("corpus")
@@ -276,6 +360,15 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     test_rows = pairs.load(test_path, dungeon, levels) if test_path else None
     if test_rows:
         _say_inferred(test_path, test_rows)
+    from ..grounding import task_pairs
+    calls = [r for r in train_rows + (test_rows or []) if task_pairs.is_task_row(r)]
+    if calls:
+        if len(calls) != len(train_rows) + len(test_rows or []):
+            raise BccError("the pairs mix goals and task calls (dungeons with tasks): evaluate them apart")
+        if mode == "demonstrations" or shuffles > 1 or nested or workers > 1:
+            raise BccError("task-call pairs are evaluated from their calls: --from demonstrations, --shuffles, "
+                           "--nested and --workers are for goals")
+        return _evaluate_task_calls(train_rows, test_rows, folds, seed, as_json, train_path, test_path)
     pairs.check_tasks(train_rows + (test_rows or []))
     seeds = [seed + k for k in range(shuffles)]
     modes = list(pairs.MODES) if mode == "both" else [mode]
@@ -312,6 +405,31 @@ def _evaluate(train_path, test_path, folds, dungeon, levels, mode, seed, as_json
     click.echo(f"confusion (from {reports[0]['mode']}{', first shuffle' if shuffles > 1 else ''}): task -> predicted, count")
     for c in reports[0]["confusion"]:
         click.echo(f"  {'ok ' if c['task'] == c['predicted'] else '   '}{c['count']:5d}  {c['task']}  ->  {c['predicted']}")
+
+
+def _evaluate_task_calls(train_rows, test_rows, folds, seed, as_json, train_path, test_path):
+    """Task-call pairs: exact-call accuracy (the task and every argument), per kind of command."""
+    from ..grounding import task_pairs
+    task_pairs.check(train_rows + (test_rows or []))
+    if test_rows:
+        model, seconds = task_pairs.train(train_rows)
+        report = task_pairs.evaluate(model, test_rows) | {"train_seconds": round(seconds, 3)}
+        how = f"train on {train_path}, test on {test_path}"
+    else:
+        report = task_pairs.cross_validate(train_rows, folds or 10, seed)
+        how = f"{folds or 10}-fold cross-validation over {train_path}"
+    report |= {"mode": "tasks", "kind": "task calls"}
+    if as_json:
+        emit_json(report)
+        return
+    click.echo(f"{len(train_rows) + len(test_rows or [])} task-call pairs; {how}")
+    click.echo(f"accuracy (the same call) {report['correct']}/{report['total']} = {report['accuracy']:.1%} "
+               f"(training {report['train_seconds']:.2f} s a model)")
+    for kind, v in report["by_kind"].items():
+        click.echo(f"  {kind:>10}  {v['correct']:4d}/{v['total']:<4d} {v['accuracy']:.1%}")
+    for p in report["pairs"]:
+        if not p["correct"]:
+            click.echo(f"  {p['command']!r} -> {p['predicted'] or 'not understood'} (expected {p['task']})")
 
 
 def _fold_progress(mode: str):

@@ -175,7 +175,7 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
                      lambda section, name: _load_action(section, name, names_in_use), base)
     from types import SimpleNamespace
     from .tasks import check_hierarchy, load_methods, load_tasks
-    read = SimpleNamespace(merge=_merge, params=_param_list, expr=_expr, ident=_ident)
+    read = SimpleNamespace(merge=_merge, params=_param_list, expr=_expr, ident=_ident, enums=enums, param=Param)
     tasks = load_tasks(data, base, names_in_use, read)
     methods = load_methods(data, base, names_in_use, read)
     check_hierarchy(tasks, methods, actions, functions, data)

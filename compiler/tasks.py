@@ -13,11 +13,13 @@ objects (compiler/hierarchy.py), like every other expression.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, field
 
 from ..errors import BccError
 from . import ast
 from .limits import MAX_METHOD_VARS
+from .names import check_text
 from .source import YList, YMap, check_keys, error_at, node_pos, suggest, value_node
 
 TASK_KEYS = {"params", "description", "override"}
@@ -28,6 +30,11 @@ METHOD_KEYS = {"task", "vars", "pre", "subtasks", "description", "override"}
 class TaskDef:
     name: str
     params: list            # [Param], in order
+    description: str = ""
+    # parameter name -> (default, (path, line, col)): an int, a bool, an enumeration value's
+    # name, or "object.attribute" (that attribute of a named object at the dungeon's start).
+    # Only `bcc command` reads them (grounding/calls.py): a call always gives every argument.
+    defaults: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -61,9 +68,59 @@ def load_tasks(data: YMap, base, names_in_use: set, read) -> dict:
         if not isinstance(tdef, YMap):
             raise error_at(section, name, "a task is a mapping, e.g. {params: {x: int, n: int}}")
         check_keys(tdef, TASK_KEYS, set(), f"task {name!r}")
-        params = read.params(tdef, names_in_use)
-        return TaskDef(name, params)
+        params, defaults = _task_params(tdef, names_in_use, read)
+        description = tdef.get("description")
+        if description is not None:
+            check_text(tdef, "description", description, "the description")
+        return TaskDef(name, params, " ".join(str(description or "").split()), defaults)
     return read.merge("task", data, "tasks", base.tasks if base else {}, load, base)
+
+
+def _task_params(tdef: YMap, names_in_use: set, read) -> tuple[list, dict]:
+    """A task's `params`: `name: type`, or `name: {type: T, default: V}` (see TaskDef.defaults)."""
+    section = tdef.get("params")
+    if not isinstance(section, YMap) or not any(isinstance(v, YMap) for v in section.values()):
+        return read.params(tdef, names_in_use), {}
+    params, defaults = [], {}
+    for pname, ptype in section.items():
+        container, key = section, pname
+        if isinstance(ptype, YMap):
+            check_keys(ptype, {"type", "default"}, {"type"}, f"parameter {pname!r}")
+            container, key, spec, ptype = ptype, "type", ptype, ptype["type"]
+        else:
+            spec = None
+        if not isinstance(ptype, str) or ptype not in names_in_use:
+            raise error_at(container, key, f"unknown type or class {ptype!r}{suggest(str(ptype), names_in_use)}")
+        name = read.ident(section, pname, pname, "a parameter")
+        if spec is not None and "default" in spec:
+            defaults[name] = (_default(spec, read.enums), _where(spec, "default"))
+        params.append(read.param(name, ptype))
+    return params, defaults
+
+
+def _default(spec: YMap, enums: dict):
+    """A parameter's default, checked against its type: an int, a bool, a value of its
+    enumeration, or `object.attribute` for an int (read from the dungeon's start)."""
+    ptype, value = spec["type"], spec["default"]
+    if ptype == "int":
+        if isinstance(value, int) and not isinstance(value, bool):
+            return value
+        if isinstance(value, str) and _OBJECT_ATTR.fullmatch(value):
+            return value
+        raise error_at(spec, "default", "the default of an int parameter is a whole number or object.attribute "
+                                        "(e.g. agent.x: where the agent starts)")
+    if ptype == "bool":
+        if isinstance(value, bool):
+            return value
+        raise error_at(spec, "default", "the default of a bool parameter is true or false")
+    if ptype in enums:
+        if isinstance(value, str) and value in enums[ptype].values:
+            return value
+        raise error_at(spec, "default", f"{value!r} is not a value of {ptype!r}{suggest(str(value), enums[ptype].values)}")
+    raise error_at(spec, "default", f"a parameter of class {ptype!r} has no default")
+
+
+_OBJECT_ATTR = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\.[A-Za-z_][A-Za-z0-9_]*")
 
 
 def load_methods(data: YMap, base, names_in_use: set, read) -> dict:

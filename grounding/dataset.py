@@ -101,9 +101,14 @@ class Dataset:
                            (json.dumps(model_json, separators=(",", ":")), pairs, int(with_corpus), seconds,
                             time.time()))
 
-    def latest_model(self) -> dict | None:
-        row = self.conn.execute("SELECT model FROM models ORDER BY id DESC LIMIT 1").fetchone()
-        return json.loads(row[0]) if row else None
+    def latest_model(self, formats=None) -> dict | None:
+        """The newest stored model; with `formats`, the newest of those formats (goal models
+        and task-call models share the table)."""
+        for (text,) in self.conn.execute("SELECT model FROM models ORDER BY id DESC"):
+            data = json.loads(text)
+            if formats is None or (isinstance(data, dict) and data.get("format") in formats):
+                return data
+        return None
 
     def integrity(self) -> str:
         return self.conn.execute("PRAGMA integrity_check").fetchone()[0]

@@ -1,7 +1,9 @@
 """Command/task pairs from a JSON Lines file, and evaluating a fresh model on them.
 
-A line is an object with at least `command` and `task` (a goal expression) and optionally
-`dungeon`, `level` and `id` -- the shape of the cleanup-amt corpus. `evaluate` trains a
+A line is an object with at least `command` and `task` (a goal expression, or a task call
+in a dungeon whose domain has tasks: task_pairs.py) and optionally `dungeon`, `level`,
+`kind` (what sort of command it is, reported apart by task-call evaluations) and `id` --
+the shape of the cleanup-amt corpus. `evaluate` trains a
 model on training pairs only (given tasks, or tasks inferred from demonstrations planned
 in the dungeon, as the crowd workers saw one) and scores it on held-out pairs: a
 prediction is right when it is the same goal, conjunctions compared as sets.
@@ -49,7 +51,7 @@ def load(path: str | Path, dungeon: str | None = None, levels=None) -> list[dict
             continue
         out.append({"id": row.get("id", n), "command": row["command"], "task": canonical(row["task"]),
                     "dungeon": ref, "level": str(level) if level is not None else "all", "line": n,
-                    "path": str(path)})
+                    "path": str(path), "kind": row["kind"] if isinstance(row.get("kind"), str) else None})
     if not out:
         raise BccError("no pairs" + (f" at level {', '.join(levels)}" if levels else ""), str(path))
     missing = [r for r in out if r["dungeon"] is None]
