@@ -257,7 +257,9 @@ def list_cmd(as_json):
     dungeons = []
     for name in shipped_dungeons():
         data = load_yaml(DUNGEONS_DIR / f"{name}.yaml")
+        task = data.get("task")
         dungeons.append({"name": name, "goal": listed_goal(data.get("goal")), "extends": data.get("extends"),
+                         "task": "; ".join(map(str, task)) if isinstance(task, list) else task,
                          "description": " ".join(str(data.get("description", "")).split())})
     domains = sorted(p.stem for p in DOMAINS_DIR.glob("*.yaml"))
     if as_json:
@@ -265,7 +267,7 @@ def list_cmd(as_json):
         return
     click.echo("dungeons:")
     for d in dungeons:
-        click.echo(f"  {d['name']:<18} {d['goal'] or '(inherits its goal)'}")
+        click.echo(f"  {d['name']:<18} {d['goal'] or ('task: ' + d['task'] if d['task'] else '(inherits its goal)')}")
     click.echo("domains:")
     for d in domains:
         click.echo(f"  {d}")

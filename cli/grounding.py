@@ -224,7 +224,7 @@ def command_cmd(dungeon, text, db, model_path, time_limit, max_memory, as_json):
     by A*. Exit 0 when the chosen task is solved; 1 when none is plausible, it has no plan
     or a budget ran out."""
     from ..solvers.limits import Deadline
-    from ..grounding.task_pairs import space_for as call_space
+    from ..grounding.calls import space_for as call_space
     if not text.strip():
         raise BccError("the command is empty")
     with within_budget(time_limit, max_memory, as_json, dungeon, grace=None) as budget:

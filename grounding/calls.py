@@ -17,6 +17,7 @@ domain and dungeon (the front end only: nothing is compiled).
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
@@ -101,6 +102,12 @@ class CallSpace:
     def canonical(self, text: str, where: tuple = (None, None, None)) -> str:
         name, values = self.parse(text, where)
         return format_call(name, values)
+
+
+@functools.lru_cache(maxsize=64)
+def space_for(ref: str) -> CallSpace:
+    """The candidate tasks of a dungeon (loaded once per process)."""
+    return CallSpace(ref)
 
 
 def _param(p, enums: dict, by_class: dict) -> Param:

@@ -72,9 +72,12 @@ def dungeons_with(tasks: set) -> list[str]:
     no dungeon, such as the cleanup-amt corpus's, are read in the one their tasks are about."""
     from ..compiler.dungeon import shipped_dungeons
     from .learn import candidates
+    from .calls import space_for
     fits = []
     for ref in shipped_dungeons():
         try:
+            if space_for(ref):      # commanded by its tasks, not by goals (task_pairs.py)
+                continue
             known = set(candidates(ref))
         except BccError:
             continue

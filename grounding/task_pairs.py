@@ -17,15 +17,9 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 from ..errors import BccError
-from .calls import CallSpace
+from .calls import space_for
 
 SHIPPED = Path(__file__).parent / "corpus" / "task_commands.jsonl"
-
-
-@functools.lru_cache(maxsize=64)
-def space_for(ref: str) -> CallSpace:
-    """The candidate tasks of a dungeon (loaded once per process)."""
-    return CallSpace(ref)
 
 
 def is_task_row(row: dict) -> bool:
