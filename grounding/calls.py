@@ -9,7 +9,7 @@ does not set takes its default:
 - the one the domain states (`w: {type: int, default: 5}`; `x: {type: int, default:
   agent.x}` reads the attribute of a named object where the dungeon starts it: "here");
 - else, for an enumeration, the first value of that type the dungeon's objects hold, in
-  the order the dungeon lists them (the mason's first stock: its main material);
+  the order the dungeon lists them (a dungeon lists its main supply first);
 - else, for a class, its only object in the dungeon.
 
 Nothing here knows a task's name or a parameter's: all of it is read from the loaded
@@ -47,7 +47,7 @@ class TaskSig:
 
 
 def format_call(name: str, values) -> str:
-    """`house(1, 1, 5, 5, 3, stone)`: a call as --task takes it."""
+    """`bed(1, 1, 3, 4, tulips)`: a call as --task takes it."""
     return f"{name}({', '.join(_spell(v) for v in values)})"
 
 
@@ -83,7 +83,7 @@ class CallSpace:
         return bool(self.tasks)
 
     def parse(self, text: str, where: tuple = (None, None, None)) -> tuple[str, tuple]:
-        """(task name, argument values) of a call such as `wall(1, 1, 3, 4, stone)`; BccError
+        """(task name, argument values) of a call such as `bed(1, 1, 3, 4, tulips)`; BccError
         (at `where`: path, line, col) unless it names a task of the domain with one value of
         the right type for each parameter."""
         m = CALL.fullmatch(text)

@@ -1,7 +1,7 @@
 """Numbers in a command as people type them: digits or cardinal number words, read apart
 from the words around them.
 
-"build a 3x4x2 house", "five wide and six long", "twenty-one blocks", "a 10 by 10 roof":
+"dig a 3x4x2 pond", "five wide and six long", "twenty-one rows", "a 10 by 10 bed":
 a command is split into word and digit tokens (so `3x4x2` is 3, x, 4, x, 2 and `3by4` is
 3, by, 4), and each run of number words is read as one cardinal below a thousand
 ("one hundred and five", "twenty one"). Number words are the one lexicon this reads: a
@@ -35,7 +35,7 @@ class Item:
 
 
 def tokens(command: str) -> list[str]:
-    """Lower-case word and digit tokens: `3x4` is three tokens, `stone_bricks` two."""
+    """Lower-case word and digit tokens: `3x4` is three tokens, `red_tulips` two."""
     return TOKEN.findall(command.lower())
 
 

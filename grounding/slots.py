@@ -2,18 +2,18 @@
 
 Numbers (numbers.py) go to integer parameters. Which number sets which parameter is a
 log-linear choice per number among the task's integer parameters and "none" (a number
-that sets nothing: "build one house"), over features of where the number stands: the
+that sets nothing: "dig one bed"), over features of where the number stands: the
 word just before and after it, the words up to three away on either side (up to the
 next number), and the run of numbers it is part of ("3 by 4 by 2", "at 4, 6": its place
 in the run and the word joining the run). A label is a parameter by name (`P:w`, shared by
-every task with a `w`) and by task (`TP:wall.h`), so what "wide" says about `w` carries
-from houses to roofs. The numbers are then given to parameters together: each parameter
+every task with a `w`) and by task (`TP:bed.l`), so what "wide" says about `w` carries
+from one task to another. The numbers are then given to parameters together: each parameter
 takes at most one number, the assignment with the highest summed log-probability wins.
 
-Enumeration parameters take a value the command names (`stone_bricks` as "stone
-bricks", the longest name first) or a word learned to mean one: a word that, in the
+Enumeration parameters take a value the command names (`red_tulips` as "red
+tulips", the longest name first) or a word learned to mean one: a word that, in the
 training pairs, appears mostly in commands whose value is that one and that do not name
-it ("wooden" -> planks). Class parameters take an object the command names.
+it ("scarlet" -> red_tulips). Class parameters take an object the command names.
 
 Nothing here knows a word of the domain: parameter names, types and values come from
 calls.py, words from the training pairs.
@@ -97,7 +97,7 @@ class NumberModel:
 
     @classmethod
     def train(cls, examples: list, l2: float = L2) -> NumberModel:
-        """`examples`: (features, task, labels, gold labels) for each number of each pair."""
+        """`examples`: (features, task, labels, expected labels) for each number of each pair."""
         counts = Counter(f for fs, _, _, _ in examples for f in set(fs))
         command_index = {f: i for i, f in enumerate(sorted(counts))}
         label_index: dict = {}
@@ -107,7 +107,7 @@ class NumberModel:
                     label_index.setdefault(g, len(label_index))
         dc, dl = len(command_index), len(label_index)
         rows, cols, groups = [], [], {}
-        for k, (fs, task, labels, gold) in enumerate(examples):
+        for k, (fs, task, labels, expected) in enumerate(examples):
             for f in set(fs):
                 rows.append(k)
                 cols.append(command_index[f])
@@ -158,8 +158,8 @@ class NumberModel:
         return cls({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(lf)}, W)
 
 
-def gold_labels(task: TaskSig, values: tuple, value: int) -> set:
-    """The int parameters the gold call gives this number's value (none if no one does)."""
+def expected_labels(task: TaskSig, values: tuple, value: int) -> set:
+    """The int parameters the expected call gives this number's value (none if no one does)."""
     hit = {p.name for p, v in zip(task.params, values) if p.kind == "int" and v == value}
     return hit or {NONE}
 

@@ -1,12 +1,12 @@
-"""Commands to task calls: "build a 3 by 4 wall of stone" -> `wall(1, 1, 3, 4, stone)`.
+"""Commands to task calls: "dig a 3 by 4 bed of tulips" -> `bed(1, 1, 3, 4, tulips)`.
 
 A dungeon whose domain has compound tasks (calls.py) is commanded by them. Three learned
 parts, all trained on command/task-call pairs (and the tasks' descriptions):
 
 1. which task: a log-linear classifier over the task names (loglinear.py, one class per
    task), reading the command's words with its numbers and its enumeration values put as
-   placeholders (`qnumber`, `qmaterial`: the type's name), so "a 3 by 4 wall of stone" and
-   "a 9 by 2 wall of bricks" are the same words to it. Each task's description, with its
+   placeholders (`qnumber`, `q` and the type's name), so "a 3 by 4 bed of tulips" and
+   "a 9 by 2 bed of roses" are the same words to it. Each task's description, with its
    name, is one more training example, so a task no pair names still has words;
 2. the integer parameters: slots.py's number model;
 3. the enumeration and object parameters: value names and learned synonyms (slots.py).
@@ -29,7 +29,7 @@ from .interpret import TOP, Interpretation
 from .loglinear import LogLinear
 from .model_file import JsonModelFile, expect_format
 from .numbers import NUMBER_WORDS, Item, read, tokens
-from .slots import NONE, NumberModel, ValueReader, assign, gold_labels, number_features
+from .slots import NONE, NumberModel, ValueReader, assign, expected_labels, number_features
 from .text import Speller
 
 FORMAT = "bcc-taskcalls/1"
@@ -153,7 +153,7 @@ class TaskCallModel(JsonModelFile):
             for k, x in enumerate(items):
                 if x.is_number:
                     numbers.append((number_features(items, k), task.name, labels,
-                                    gold_labels(task, values, x.value)))
+                                    expected_labels(task, values, x.value)))
         for space in spaces.values():
             for t in space.tasks:
                 items = description_items(t)
@@ -195,7 +195,7 @@ class TaskCallModel(JsonModelFile):
 
 def _named(scores: list, tasks: list, words: set) -> list:
     """Log-posteriors with NAMED added to each task whose name (its words) the command says,
-    renormalised: "build a roof" is a roof even where "build" mostly meant a house."""
+    renormalised: "dig a pond" is a pond even where "dig" mostly meant a bed."""
     s = [x + (NAMED if set(t.name.lower().split("_")) <= words else 0.0) for x, t in zip(scores, tasks)]
     top = max(s)
     z = top + math.log(sum(math.exp(x - top) for x in s))
@@ -204,7 +204,7 @@ def _named(scores: list, tasks: list, words: set) -> list:
 
 def description_items(task: TaskSig) -> list[Item]:
     """A task's description as items: an int parameter written in backquotes (`w`) stands
-    for a number that sets it, so "walls `w` x `l` and `h` high" teaches the number model
+    for a number that sets it, so "a bed `w` x `l`, `h` deep" teaches the number model
     "x" between w and l and "high" after h before any pair does."""
     ints = {p.name for p in task.params if p.kind == "int"}
     out = []
