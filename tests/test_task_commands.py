@@ -322,3 +322,10 @@ def test_the_task_call_machinery_knows_no_word_of_the_building_domains():
     for name in ("numbers.py", "calls.py", "slots.py", "task_model.py"):
         for n, line in enumerate((root / name).read_text().splitlines(), 1):
             assert not words.search(line), f"grounding/{name}:{n}: {line.strip()}"
+
+
+def test_list_shows_a_dungeon_commanded_by_its_task():
+    listed = json.loads(run("list", "--json").stdout)
+    yard = next(d for d in listed["dungeons"] if d["name"] == "mason_yard")
+    assert yard["task"] == "house(1, 1, 5, 5, 3, stone)" and yard["goal"] is None
+    assert "mason_yard         task: house(1, 1, 5, 5, 3, stone)" in run("list").stdout
