@@ -69,14 +69,18 @@ class RunResult:
 def solve_from(model: Model, state: bytes, solver: str, budget: Budget, replanning: bool,
                solver_options: dict | None = None):
     """A plan from `state` (the compiled model with its start moved there), with the
-    user's checked `solver_options`."""
+    user's checked `solver_options`, through the run layer: the budget binds all of it
+    (a solver's preparation too), as in `bcc solve`."""
+    from functools import partial
+    from ..run.solve import Request, run as run_request
     solve = get_solver(solver)
     options = dict(solver_options or {})
     # replanning must be quick: the cheap heuristic, for the solvers that take one, unless the user chose
     informed = any(o.name == "heuristic" for o in options_of(solve))
     if replanning and informed and "heuristic" not in options:
         options.update(check_options(solver, {"heuristic": "manhattan"}))
-    return solve(dataclasses.replace(model, initial=state), budget, **options)
+    start = dataclasses.replace(model, initial=state)
+    return run_request(Request(lambda: start, solver, {}, budget, solve=partial(solve, **options))).result
 
 
 def prepare(bridge: Bridge, world: WorldMap, port: int, player: str = BOT) -> None:
