@@ -94,7 +94,7 @@ def main() -> int:
                                        capture_output=True, text=True)
                     if r.returncode == 0:
                         jobs.append((f"{task}_{level}", path))
-                    else:
+                    elif not args.only or re.search(args.only, f"{task}_{level}"):
                         rows.append({"name": f"{task}_{level}", "status": "not imported",
                                      "message": (r.stderr.strip().splitlines() or [""])[-1][:200]})
         else:
