@@ -3,70 +3,27 @@
 Resolves every name (parameters, lets, constants, objects, enumeration values), inlines
 propositional functions, expands quantifiers over finite classes (a grid quantifier whose
 cell is pinned by `b.x == ...` conjuncts becomes one cell lookup), folds attributes that
-no action changes into constants, and reports each type error at its position.
+no action changes into constants, and reports each type error at its position. Effects
+are grounded by the `EffectGrounder` half (ground_effects.py); the values names stand for
+besides IR are in ground_refs.py.
 """
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
 
 from ..errors import BccError
 from . import ast, ir
 from .domain import ClassDef, Expr, table_row
 from .dungeon import Dungeon
-from .limits import MAX_GENERATED_NESTING, MAX_GRID_CELLS, MAX_GROUND_DEPTH, MAX_GROUND_EFFECTS, MAX_KEYED_OBJECTS
+from .ground_effects import EffectGrounder
+from .ground_refs import ClassName, Ctx, KeyRef, ObjRef, Table
+from .limits import MAX_GRID_CELLS, MAX_GROUND_DEPTH, MAX_KEYED_OBJECTS
 from .source import suggest
 
 CMP_NUMERIC = {"<", "<=", ">", ">="}
 
 
-@dataclass(frozen=True)
-class ObjRef:
-    """A named object (`agent`, the room `red`)."""
-    name: str
-    cls: str
-
-
-@dataclass(frozen=True)
-class KeyRef:
-    """An object of a keyed class, by key: `block[x, y, z]`, `inventoryBlock[slot]`."""
-    cls: str
-    keys: tuple
-
-
-@dataclass(frozen=True)
-class ClassName:
-    name: str
-
-
-@dataclass(frozen=True)
-class Table:
-    """A table indexed by `[...]`: a list constant (`dx[d]`, indexed by an int), or a table
-    property of an enumeration value (`r.uses[m]`, indexed by a value of its `per` type).
-    With `row` (a run-time enumeration value), `values` holds every value's row, one after
-    another, each `width` long."""
-    name: str
-    values: tuple
-    index_type: str = "int"
-    value_type: str = "int"
-    row: object = None
-    width: int = 0
-
-
-class Ctx:
-    """Names in scope, and the text being checked (for error positions)."""
-
-    def __init__(self, src: Expr, env: dict | None = None, stack: tuple = ()):
-        self.src, self.env, self.stack = src, dict(env or {}), stack
-
-    def bind(self, **names) -> "Ctx":
-        return Ctx(self.src, {**self.env, **names}, self.stack)
-
-    def error(self, node, message: str) -> BccError:
-        return self.src.error(message, node)
-
-
-class Grounder:
+class Grounder(EffectGrounder):
     """Grounds one dungeon. `dynamic` is the set of (class, attribute) pairs some action
     writes; None means "not known yet" (the discovery pass), so nothing is folded."""
 
@@ -502,121 +459,6 @@ class Grounder:
                 self.bool_expr(src.node, Ctx(src, env))
             self.effects(schema.effects.node, Ctx(schema.effects, env))
 
-    # ---- effects ---------------------------------------------------------------------
-    def effects(self, nodes, ctx: Ctx) -> tuple:
-        out = []
-        for node in nodes:
-            self.effect_work += 1
-            if self.effect_work > MAX_GROUND_EFFECTS:   # nested `first`/`forall` multiply: 20 deep over 9 objects is 9^20
-                raise ctx.error(node, f"the effects expand to more than {MAX_GROUND_EFFECTS:,} ground effects "
-                                      "(each `first` and `forall` repeats its body once per object, and nested "
-                                      "ones multiply)")
-            out.extend(getattr(self, "e_" + type(node).__name__)(node, ctx))
-        return tuple(out)
-
-    def e_Assign(self, node, ctx):
-        target = node.target
-        if not isinstance(target, ast.Attr):
-            raise ctx.error(node, "only attributes can be assigned, e.g. `a.x = tx`")
-        obj = self.expr(target.obj, ctx)
-        if not isinstance(obj, (ObjRef, KeyRef)):
-            raise ctx.error(target, f"type error: {self.type_of(obj)} has no attributes to assign")
-        cdef = self.dom.classes[obj.cls]
-        if target.name not in cdef.attrs:
-            raise ctx.error(target, f"class {obj.cls!r} has no attribute {target.name!r}{suggest(target.name, cdef.attrs)}")
-        if target.name in cdef.key:
-            raise ctx.error(target, f"{target.name!r} is a key of {obj.cls!r}: use `add`/`remove` to move such objects")
-        atype = cdef.attrs[target.name].type
-        value = self.expr(node.value, ctx, atype)
-        if self.type_of(value) != atype:
-            raise ctx.error(node.value, f"type error: {obj.cls}.{target.name} is {atype}, found {self.type_of(value)}")
-        return [self.write(obj, target.name, value, node, ctx)]
-
-    def write(self, obj, attr: str, value, node, ctx):
-        if isinstance(obj, KeyRef) and self.is_grid(obj.cls):
-            self.writes.append(("<grid>", obj.keys[1]))
-            return ir.SetCell(*obj.keys, value)
-        self.writes.append((obj.cls, attr))
-        cdef = self.dom.classes[obj.cls]
-        if isinstance(value, ir.Const) and cdef.attrs[attr].type == "int":
-            rng = self.attr_range(cdef, attr)
-            if rng is not None and not rng[0] <= value.value <= rng[1]:
-                raise ctx.error(node, f"an effect sets {obj.cls}.{attr} to {value.value}, "
-                                      f"outside its range [{rng[0]}, {rng[1]}]")
-        if isinstance(obj, ObjRef):
-            return ir.SetVar(ir.StateVar(obj.name, obj.cls, attr, value.type), value)
-        if all(isinstance(k, ir.Const) for k in obj.keys):
-            key = tuple(k.value for k in obj.keys)
-            if key not in set(self.keys_of(obj.cls)):
-                raise ctx.error(node, f"{obj.cls}{list(key)} does not exist")
-            return ir.SetVar(ir.StateVar((obj.cls, key), obj.cls, attr, value.type), value)
-        if len(obj.keys) != 1:
-            raise ctx.error(node, f"a run-time key into {obj.cls!r} needs a class keyed by one attribute")
-        return ir.SetVarAt(obj.cls, obj.keys[0], attr, value)
-
-    def e_If(self, node, ctx):
-        orelse = self.effects(node.orelse, ctx)
-        for cond, body in reversed(node.branches):
-            c = self.bool_expr(cond, ctx)
-            orelse = when(c, self.effects(body, ctx), orelse)
-        return list(orelse)
-
-    def e_First(self, node, ctx):
-        self.check_class(node, ctx)
-        if self.is_grid(node.cls):
-            raise ctx.error(node, "`first` over the grid class is not supported; name the cell with block[x, y, z]")
-        orelse = self.effects(node.orelse, ctx)
-        for ref in reversed(self.objects_of(node.cls)):
-            inner = ctx.bind(**{node.var: ref})
-            orelse = when(self.bool_expr(node.cond, inner), self.effects(node.body, inner), orelse)
-        return list(orelse)
-
-    def e_ForEach(self, node, ctx):
-        self.check_class(node, ctx)
-        if self.is_grid(node.cls):
-            raise ctx.error(node, "`forall` effects over the grid class are not supported")
-        out = []
-        for ref in self.objects_of(node.cls):
-            inner = ctx.bind(**{node.var: ref})
-            cond = self.bool_expr(node.cond, inner) if node.cond is not None else ir.TRUE
-            out.extend(when(cond, self.effects(node.body, inner), ()))
-        return out
-
-    def check_class(self, node, ctx):
-        if node.cls not in self.dom.classes:
-            raise ctx.error(node, f"unknown class {node.cls!r}{suggest(node.cls, self.dom.classes)}")
-
-    def keyed_target(self, node, target, ctx) -> KeyRef:
-        obj = self.expr(target, ctx)
-        if not isinstance(obj, KeyRef):
-            raise ctx.error(node, "`add` and `remove` take an object of a keyed class, e.g. block[x, y, z]")
-        return obj
-
-    def e_Add(self, node, ctx):
-        obj = self.keyed_target(node, node.target, ctx)
-        cdef = self.dom.classes[obj.cls]
-        inits = dict(node.inits)
-        for name in inits:
-            if name not in cdef.attrs or name in cdef.key:
-                raise ctx.error(node, f"{obj.cls!r} has no non-key attribute {name!r}{suggest(name, cdef.attrs)}")
-        out = []
-        for attr, adef in cdef.attrs.items():
-            if attr in cdef.key:
-                continue
-            if attr in inits:
-                value = self.expr(inits[attr], ctx, adef.type)
-                if self.type_of(value) != adef.type:
-                    raise ctx.error(inits[attr], f"type error: {obj.cls}.{attr} is {adef.type}, found {self.type_of(value)}")
-            else:
-                value = self.value_const(obj.cls, attr, adef.default)
-            out.append(self.write(obj, attr, value, node, ctx))
-        return out
-
-    def e_Remove(self, node, ctx):
-        obj = self.keyed_target(node, node.target, ctx)
-        cdef = self.dom.classes[obj.cls]
-        return [self.write(obj, attr, self.value_const(obj.cls, attr, adef.default), node, ctx)
-                for attr, adef in cdef.attrs.items() if attr not in cdef.key]
 
 
 def _cmp(op, a, b) -> bool:
@@ -641,13 +483,6 @@ def make_bool(op: str, items: list):
     return out[0] if len(out) == 1 else ir.BoolOp(op, tuple(out))
 
 
-def when(cond, then: tuple, orelse: tuple) -> tuple:
-    if isinstance(cond, ir.Const):
-        return tuple(then) if cond.value else tuple(orelse)
-    if not then and not orelse:
-        return ()
-    return (ir.When(cond, tuple(then), tuple(orelse)),)
-
 
 def _in_range(value, lo: int, hi: int):
     if isinstance(value, ir.Const):
@@ -664,17 +499,3 @@ def _pin(cond, names: tuple):
         if isinstance(a, ir.Local) and a.name in names and not (ir.locals_of(b) & set(names)):
             return a.name, b
     return None
-
-
-def check_nesting(name: str, pre: list, effects: tuple, where: Expr) -> None:
-    """Each precondition and each conditional effect is one more indented block of the
-    generated Python, which allows at most 100: refuse an action that would need more."""
-    depth, todo = 0, [(e, 1) for e in effects]
-    while todo:
-        e, level = todo.pop()
-        if isinstance(e, ir.When):
-            depth = max(depth, level)
-            todo += [(x, level + 1) for x in e.then + e.orelse]
-    if len(pre) + depth > MAX_GENERATED_NESTING:
-        raise where.error(f"action {name}: {len(pre)} preconditions and effects nested {depth} deep "
-                          f"(each elif and `first` item is one level) exceed {MAX_GENERATED_NESTING} levels")

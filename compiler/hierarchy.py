@@ -28,7 +28,7 @@ from ..errors import BccError
 from . import ir
 from .domain import Expr
 from .emit import Emitter
-from .ground import Ctx, KeyRef, ObjRef
+from .ground_refs import Ctx, KeyRef, ObjRef
 from .source import Origin
 
 ROOT = "root"   # the name the decomposition tree gives the dungeon's own network

@@ -23,7 +23,9 @@ from .domain import is_file
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
 from .emit import Emitter
 from .ir import GroundAction
-from .ground import Ctx, Grounder, ObjRef, check_nesting
+from .ground import Grounder
+from .ground_effects import check_nesting
+from .ground_refs import Ctx, ObjRef
 from .layout import make_layout
 from .reachability import Analysis, reachable
 from .access import reads

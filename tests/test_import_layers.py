@@ -67,6 +67,8 @@ LAYER_OF = {
     "bcc.compiler.domain": "front end",
     "bcc.compiler.dungeon": "front end",
     "bcc.compiler.ground": "front end",
+    "bcc.compiler.ground_effects": "front end",   # effects grounded: a mixin of the Grounder
+    "bcc.compiler.ground_refs": "front end",      # objects, keyed objects, classes, tables; the scope
     "bcc.compiler.blocks": "front end",    # a dungeon's `blocks:` text
     "bcc.compiler.structure": "front end", # a dungeon's `structure:` goal (a blueprint) read into atoms
     "bcc.compiler.tasks": "front end",     # a domain's `tasks:` and `methods:`, a dungeon's `task:`
