@@ -3,107 +3,23 @@
 This is the "load and check the shape" step: every key is validated with its position,
 every expression is parsed (so a syntax error points into the file), and nothing is
 resolved yet; `ground.py` gives names their meaning once a dungeon supplies objects.
+What is loaded is in definitions.py; the `types:` section is read by domain_enums.py,
+expressions by domain_exprs.py; this module reads the rest and merges `extends`.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import BccError
-from . import ast
+from .definitions import BUILTIN_TYPES, ActionDef, AttrDef, ClassDef, Domain, Expr, FunctionDef, Param
+from .domain_enums import load_enums
+from .domain_exprs import condition, expression, joined
 from .names import check_name, check_text
 from .limits import MAX_REF_LENGTH, shorten
-from .source import YList, YMap, check_keys, error_at, error_on, load_yaml, origin, suggest, Origin
+from .source import YList, YMap, check_keys, error_at, load_yaml, suggest
 
 DOMAINS_DIR = Path(__file__).resolve().parent.parent / "domains"
-BUILTIN_TYPES = ("int", "bool")
 SIZE_CONSTANTS = ("width", "height", "depth")
-
-
-@dataclass(frozen=True)
-class Expr:
-    """A parsed expression (or effect list) and where its text lives."""
-    node: object
-    where: Origin
-    text: str
-
-    def error(self, message: str, node: ast.Node | None = None) -> BccError:
-        line, col = (node or self.node).pos if hasattr(node or self.node, "pos") else (1, 1)
-        return self.where.error(message, line, col)
-
-
-@dataclass
-class EnumType:
-    name: str
-    values: list[str]                     # dense index -> name
-    ids: list[int]                        # dense index -> external id
-    properties: dict[str, list]           # property -> value per dense index
-    prop_types: dict = field(default_factory=dict)  # property -> "bool" | "int" | an enumeration name
-    prop_defaults: dict = field(default_factory=dict)  # property -> its declared default
-    # table properties (`per: E`): property -> E; each value's entry is then a dict from E's
-    # value names to values (entries left out take the default), read as `v.prop[e]`
-    prop_per: dict = field(default_factory=dict)
-
-    def index(self, name: str) -> int:
-        return self.values.index(name)
-
-
-@dataclass
-class AttrDef:
-    name: str
-    type: str
-    range: tuple[Expr, Expr] | None = None
-    names: dict[str, int] = field(default_factory=dict)
-    default: object = None
-
-
-@dataclass
-class ClassDef:
-    name: str
-    attrs: dict[str, AttrDef]
-    key: list[str] = field(default_factory=list)
-    position: list[str] = field(default_factory=list)
-
-
-@dataclass
-class Param:
-    name: str
-    type: str
-
-
-@dataclass
-class FunctionDef:
-    name: str
-    params: list[Param]
-    body: Expr
-
-
-@dataclass
-class ActionDef:
-    name: str
-    params: list[Param]
-    lets: list[tuple[str, Expr]]
-    pre: list[Expr]
-    effects: Expr
-    cost: int = 1
-
-
-@dataclass
-class Domain:
-    name: str
-    path: str
-    description: str
-    enums: dict[str, EnumType]
-    constants: dict[str, tuple[int, ...]]
-    classes: dict[str, ClassDef]
-    functions: dict[str, FunctionDef]
-    actions: dict[str, ActionDef]
-    failure: Expr | None
-    binding: YMap                         # the `dungeon:` section, read by dungeon.py
-    source: YMap
-    start: Expr | None = None             # `dungeon.start`, parsed here (a cached domain needs no parser)
-    tasks: dict = field(default_factory=dict)     # compound tasks (tasks.py): name -> TaskDef
-    methods: dict = field(default_factory=dict)   # their methods, in the file's order: name -> MethodDef
 
 
 def resolve_domain_path(ref: str, relative_to: Path | None = None) -> Path:
@@ -157,7 +73,7 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
     check_keys(data, DOMAIN_KEYS, {"domain"} if base else {"domain", "classes", "actions"}, "a domain")
     if data.get("types") is not None and not isinstance(data["types"], YMap):
         raise error_at(data, "types", "`types` must map type names to their values")
-    enums = _load_enums(data.get("types"), base.enums if base else {})
+    enums = load_enums(data.get("types"), base.enums if base else {})
     constants = dict(base.constants) if base else {}
     for name, values in _load_constants(data).items():
         if name in constants:
@@ -175,11 +91,11 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
                      lambda section, name: _load_action(section, name, names_in_use), base)
     from types import SimpleNamespace
     from .tasks import check_hierarchy, load_methods, load_tasks
-    read = SimpleNamespace(merge=_merge, params=_param_list, expr=_expr, ident=_ident, enums=enums, param=Param)
+    read = SimpleNamespace(merge=_merge, params=_param_list, expr=expression, ident=_ident, enums=enums, param=Param)
     tasks = load_tasks(data, base, names_in_use, read)
     methods = load_methods(data, base, names_in_use, read)
     check_hierarchy(tasks, methods, actions, functions, data)
-    failure = _condition(data, "failure") if "failure" in data else (base.failure if base else None)
+    failure = condition(data, "failure") if "failure" in data else (base.failure if base else None)
     binding = _merge_binding(data, base)
     start = _check_binding(data, binding, classes)
     _ident(data, "domain", data["domain"], "the domain name")
@@ -239,8 +155,8 @@ def _load_function(section, name, names_in_use) -> FunctionDef:
     fdef = section[name]
     if isinstance(fdef, YMap):
         check_keys(fdef, {"params", "body", "description", "override"}, {"body"}, f"function {name!r}")
-        return FunctionDef(name, _param_list(fdef, names_in_use), _expr(fdef, "body"))
-    return FunctionDef(name, [], _expr(section, name))  # `name: expression`: no parameters
+        return FunctionDef(name, _param_list(fdef, names_in_use), expression(fdef, "body"))
+    return FunctionDef(name, [], expression(section, name))  # `name: expression`: no parameters
 
 
 def _check_binding(data, b, classes) -> Expr | None:
@@ -251,7 +167,7 @@ def _check_binding(data, b, classes) -> Expr | None:
     check_keys(b, {"grid", "agent", "agent_fields", "inventory", "rooms", "lists", "start"}, set(),
                "the `dungeon` section")
     # a condition every dungeon's start must meet, e.g. the agent's cell is free
-    start = _expr(b, "start") if "start" in b else None
+    start = expression(b, "start") if "start" in b else None
 
     def cls(container, key):
         name = container[key]
@@ -313,220 +229,8 @@ def _check_binding(data, b, classes) -> Expr | None:
     return start
 
 
-def _expr(container, key, effects: bool = False) -> Expr:
-    text = _scalar_text(container, key)   # `pre: true` in YAML is a bool, not the text "true"
-    where = origin(container, key)
-    from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
-    node = parse_effects(text, where) if effects else parse_expression(text, where)
-    return Expr(node, where, text)
-
-
-def _condition(container, key) -> Expr:
-    """A condition (a goal, a failure) written as one expression or, as `pre` may be, as a
-    list of expressions that must all hold."""
-    if not isinstance(container[key], YList):
-        return _expr(container, key)
-    return _joined(container, key, " and ", effects=False)
-
-
-def _joined(container, key, separator: str, effects: bool) -> Expr:
-    """A YAML list of expressions (each in parentheses, for conditions) or of effects, parsed
-    as one text joined by `separator`, whose every character keeps its place in the file:
-    an error in the third item points into the third item."""
-    items = container[key]
-    if not items:
-        raise error_at(container, key, f"`{key}` is an empty list: leave the key out instead")
-    text, positions, parts = "", [], []
-    for i in range(len(items)):
-        part = _scalar_text(items, i)
-        where = origin(items, i)
-        parts.append((part, where))
-        start = where.locate(1, 1)
-        if i:
-            text += separator
-            positions += [start] * len(separator)
-        opening, closing = ("", "") if effects else ("(", ")")
-        text += opening + part + closing
-        positions += [start] * len(opening)
-        line, col = 1, 1
-        for ch in part:
-            positions.append(where.locate(line, col))
-            line, col = (line + 1, 1) if ch == "\n" else (line, col + 1)
-        positions += [where.locate(line, col)] * len(closing)
-    from .parse import parse_effects, parse_expression   # lark: imported only when text is parsed
-    parse = parse_effects if effects else parse_expression
-    first = origin(container, key)
-    combined = Origin(first.path, first.line, first.col, 1, tuple(positions), text)
-    try:
-        node = parse(text, combined)
-    except BccError:
-        for part, where in parts:   # report the error as in the first bad item alone, not the joining's
-            parse(part, where)
-        raise
-    return Expr(node, combined, text)
-
-
-def _scalar_text(container, key) -> str:
-    """An expression's text as YAML gave it (`pre: true` is a bool, `cost: 1` an int); a
-    list or a mapping where an expression belongs is bad input."""
-    value = container[key]
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    if not isinstance(value, str):
-        kind = ("a list" if isinstance(value, YList) else "a mapping" if isinstance(value, YMap)
-                else "nothing" if value is None else f"the number {value!r}" if isinstance(value, float)
-                else f"a {type(value).__name__}")
-        raise error_at(container, key, f"expected an expression as text, found {kind}")
-    return value
-
-
 def _ident(container, key, value, what: str) -> str:
     return check_name(container, key, value, what)
-
-
-def _load_enums(section, inherited: dict) -> dict[str, EnumType]:
-    """Enumerations; a type the base domain has already gets the new values appended."""
-    enums = {name: EnumType(e.name, list(e.values), list(e.ids), {p: list(v) for p, v in e.properties.items()},
-                            dict(e.prop_types), dict(e.prop_defaults), dict(e.prop_per))
-             for name, e in inherited.items()}
-    if section is None:
-        return enums
-    if not isinstance(section, YMap):
-        raise error_on(section, "`types` must map type names to their values")
-    for tname in section:  # declare every name first: properties may be of another new type
-        _ident(section, tname, tname, "a type name")
-        if tname in BUILTIN_TYPES:
-            raise error_at(section, tname, f"{tname!r} is a built-in type", on_key=True)
-        if tname not in enums:
-            enums[tname] = EnumType(tname, [], [], {}, {}, {})
-    pending = []
-    for tname, tdef in section.items():
-        if not isinstance(tdef, YMap):
-            raise error_at(section, tname, "a type needs `values` (a list or a mapping)")
-        check_keys(tdef, {"values", "properties"}, {"values"}, f"type {tname!r}")
-        enum = enums[tname]
-        inherited_values = set(inherited[tname].values) if tname in inherited else set()
-        props = tdef.get("properties") or YMap()
-        if not isinstance(props, YMap):
-            raise error_at(tdef, "properties", "`properties` maps property names to defaults")
-        defaults = {}
-        for p, d in props.items():
-            _ident(props, p, p, "a property name")
-            if p in enum.properties:
-                raise error_at(props, p, f"type {tname!r} already has the property {p!r}", on_key=True)
-            if isinstance(d, YMap):  # {type: T, default: value}, and with `per: E` a table
-                check_keys(d, {"type", "default", "per"}, {"type", "default"}, f"property {p!r}")
-                known = list(enums) + list(BUILTIN_TYPES)
-                if not isinstance(d["type"], str) or d["type"] not in known:
-                    raise error_at(d, "type", f"unknown type {d['type']!r}{suggest(str(d['type']), known)}")
-                if "per" in d:
-                    if not isinstance(d["per"], str) or d["per"] not in enums:
-                        raise error_at(d, "per", f"`per` names the enumeration that indexes the table; "
-                                                 f"unknown type {d['per']!r}{suggest(str(d['per']), enums)}")
-                    enum.prop_per[p] = d["per"]
-                enum.prop_types[p] = d["type"]
-                defaults[p] = d["default"]
-                pending.append((enum, p, d["default"], d, "default", False))
-            elif isinstance(d, (bool, int)):
-                enum.prop_types[p] = "bool" if isinstance(d, bool) else "int"
-                defaults[p] = d
-            else:
-                raise error_at(props, p, "a property default is true/false, a number, or {type: T, default: V}")
-            enum.properties[p] = [{} if p in enum.prop_per else defaults[p]] * len(enum.values)
-            enum.prop_defaults[p] = defaults[p]
-        values = tdef["values"]
-        if isinstance(values, YList):
-            items = [(v, YMap()) for v in values]
-            for i, v in enumerate(values):
-                _ident(values, i, v, "a value")
-        elif isinstance(values, YMap):
-            items = list(values.items())
-        else:
-            raise error_at(tdef, "values", "`values` must be a list of names or a mapping")
-        for i, (vname, vdef) in enumerate(items):
-            where = (values, i if isinstance(values, YList) else vname)
-            if not isinstance(vdef, YMap):
-                raise error_at(*where, "a value's definition must be a mapping, e.g. {id: 7}")
-            check_keys(vdef, {"id"} | set(enum.properties), set(), f"value {vname!r}")
-            if str(vname) in inherited_values:   # a base's value, listed again to set its properties
-                if "id" in vdef:
-                    raise error_at(vdef, "id", f"{vname!r} is listed twice in {tname!r}: it is the base domain's "
-                                               "value, whose id stays; an extending domain may set its properties "
-                                               "only", on_key=True)
-                inherited_values.discard(str(vname))   # set once
-                index = enum.values.index(str(vname))
-                for p in vdef:
-                    enum.properties[p][index] = _property_value(enum, p, vdef, defaults, pending)
-                continue
-            if str(vname) in enum.values:
-                raise error_at(*where, f"{vname!r} is listed twice in {tname!r}")
-            vid = vdef.get("id", len(enum.values))
-            if not isinstance(vid, int) or isinstance(vid, bool):
-                raise error_at(vdef, "id", "`id` must be a whole number")
-            if vid in enum.ids:
-                raise error_at(*where, f"type {tname!r} has two values with the id {vid}")
-            enum.values.append(str(vname))
-            enum.ids.append(vid)
-            for p in enum.properties:
-                enum.properties[p].append(_property_value(enum, p, vdef, defaults, pending))
-    for enum, p, v, where, key, entry in pending:  # check property values once every type is complete
-        per = enum.prop_per.get(p)
-        if entry and key not in enums[per].values:
-            raise error_at(where, key, f"{shorten(repr(key))} is not a value of {per!r}, which indexes the table "
-                                       f"{enum.name}.{p}{suggest(str(key), enums[per].values)}", on_key=True)
-        _check_property_value(enums, enum, p, v, where, key)
-    for enum in enums.values():  # enum-valued properties are stored as dense indices
-        for p, ptype in enum.prop_types.items():
-            if ptype not in enums:
-                continue
-            dense = lambda v: v if isinstance(v, int) else enums[ptype].index(v)
-            if p in enum.prop_per:
-                enum.properties[p] = [{k: dense(v) for k, v in row.items()} for row in enum.properties[p]]
-                if not isinstance(enum.prop_defaults[p], int):
-                    enum.prop_defaults[p] = dense(enum.prop_defaults[p])
-            else:
-                enum.properties[p] = [dense(v) for v in enum.properties[p]]
-    return enums
-
-
-def _property_value(enum: EnumType, p: str, vdef, defaults: dict, pending: list):
-    """Property `p` of a value defined by `vdef` (a table's entries as a dict), noted in
-    `pending` to be checked once every type is complete."""
-    if p in enum.prop_per:   # a table: {index value: entry}
-        entries = vdef.get(p, YMap())
-        if not isinstance(entries, YMap):
-            raise error_at(vdef, p, f"property {p!r} is a table: a mapping from values of "
-                                    f"{enum.prop_per[p]!r} to {enum.prop_types[p]}, e.g. {{name: 1}}")
-        for key in entries:
-            pending.append((enum, p, entries[key], entries, key, True))
-        return dict(entries)
-    v = vdef.get(p, defaults[p] if p in defaults else enum.prop_defaults.get(p))
-    pending.append((enum, p, v, vdef if p in vdef else None, p, False))
-    return v
-
-
-def _check_property_value(enums, enum: EnumType, p: str, v, where, key) -> None:
-    """A property's value (or a table entry, or a declared default) is of its type."""
-    ptype = enum.prop_types[p]
-    ok = v in enums[ptype].values if ptype in enums else \
-        (isinstance(v, bool) if ptype == "bool" else isinstance(v, int) and not isinstance(v, bool))
-    if ok:
-        return
-    shown = {"int": "an int", "bool": "a bool"}.get(ptype, f"a value of {ptype!r}")
-    if where is None:
-        raise BccError(f"property {p!r} of {enum.name!r} must be {shown}")
-    raise error_at(where, key, f"property {p!r} must be {shown}, found {shorten(repr(v))}"
-                               f"{suggest(str(v), enums[ptype].values) if ptype in enums else ''}")
-
-
-def table_row(enums: dict, enum: EnumType, p: str, index: int) -> tuple:
-    """Entry `index` of the table property `p`, as a tuple over the values of its `per`
-    enumeration in order (values a table leaves out, or added by a later domain, take the
-    property's default)."""
-    row, default = enum.properties[p][index], enum.prop_defaults[p]
-    return tuple(row.get(name, default) for name in enums[enum.prop_per[p]].values)
 
 
 def _load_constants(data) -> dict[str, tuple[int, ...]]:
@@ -582,7 +286,7 @@ def _load_attr(section, aname, adef, enums) -> AttrDef:
         r = adef["range"]
         if atype != "int" or not isinstance(r, YList) or len(r) != 2:
             raise error_at(adef, "range", "`range` is [low, high] and only for int attributes")
-        rng = tuple(_expr(r, i) for i in range(2))
+        rng = tuple(expression(r, i) for i in range(2))
     names = adef.get("names") or YMap()
     if not isinstance(names, YMap) or not all(isinstance(v, int) and not isinstance(v, bool) for v in names.values()):
         raise error_at(adef, "names", "`names` maps value names to numbers, e.g. {north: 2}")
@@ -624,19 +328,19 @@ def _load_action(section, name, known_types) -> ActionDef:
     let_section = adef.get("let") or YMap()
     if not isinstance(let_section, YMap):
         raise error_at(adef, "let", "`let` maps names to expressions, e.g. {tx: a.x + 1}")
-    lets = [(_ident(let_section, k, k, "a let name"), _expr(let_section, k)) for k in let_section]
+    lets = [(_ident(let_section, k, k, "a let name"), expression(let_section, k)) for k in let_section]
     pre = adef.get("pre")
     if pre is None:
         pres = []
     elif isinstance(pre, YList):
-        pres = [_expr(pre, i) for i in range(len(pre))]
+        pres = [expression(pre, i) for i in range(len(pre))]
     else:
-        pres = [_expr(adef, "pre")]
+        pres = [expression(adef, "pre")]
     effect = adef["effect"]
     if isinstance(effect, YList):  # a list of effects is the same as joining them with `;`
-        eff = _joined(adef, "effect", ";\n", effects=True)
+        eff = joined(adef, "effect", ";\n", effects=True)
     else:
-        eff = _expr(adef, "effect", effects=True)
+        eff = expression(adef, "effect", effects=True)
     cost = adef.get("cost", 1)
     if not isinstance(cost, int) or isinstance(cost, bool) or cost < 0:
         raise error_at(adef, "cost", "`cost` must be a non-negative integer")

@@ -11,7 +11,9 @@ from pathlib import Path
 
 
 from ..errors import BccError
-from .domain import Domain, Expr, _condition, is_file, load_domain, resolve_domain_path
+from .definitions import Domain, Expr
+from .domain import is_file, load_domain, resolve_domain_path
+from .domain_exprs import condition
 from .blocks import parse_blocks, place_blocks
 from .limits import MAX_GRID_CELLS, MAX_REF_LENGTH, shorten
 from .names import check_name, check_text, name_from_stem
@@ -190,11 +192,11 @@ class _Builder:
             dungeon.structure = read_blueprint(data["goal"], tuple(self.venum.values), (width, height, depth))
             dungeon.goal = structure_expr(dungeon.structure, data["goal"], gclass.name, value_attrs[0])
         elif "goal" in data:
-            dungeon.goal = _condition(data, "goal")
+            dungeon.goal = condition(data, "goal")
         if "task" in data:
-            from .domain import _expr
+            from .domain_exprs import expression
             from .tasks import task_calls
-            dungeon.task = task_calls(data, "task", _expr)
+            dungeon.task = task_calls(data, "task", expression)
         return dungeon
 
     def size(self, key: str) -> int:

@@ -13,7 +13,7 @@ import itertools
 
 from ..errors import BccError
 from . import ast, ir
-from .domain import ClassDef, Expr, table_row
+from .definitions import ClassDef, Expr, table_row
 from .dungeon import Dungeon
 from .ground_effects import EffectGrounder
 from .ground_refs import ClassName, Ctx, KeyRef, ObjRef, Table

@@ -8,7 +8,7 @@ constant writes, and the bounds on how much nested `first`/`forall` may multiply
 from __future__ import annotations
 
 from . import ast, ir
-from .domain import Expr
+from .definitions import Expr
 from .ground_refs import Ctx, KeyRef, ObjRef
 from .limits import MAX_GENERATED_NESTING, MAX_GROUND_EFFECTS
 from .source import suggest

@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..errors import BccError
-from .domain import Expr
+from .definitions import Expr
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 
 from ..errors import BccError
 from . import ir
-from .domain import Expr
+from .definitions import Expr
 from .emit import Emitter
 from .ground_refs import Ctx, KeyRef, ObjRef
 from .source import Origin

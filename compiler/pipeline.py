@@ -18,8 +18,8 @@ from ..errors import BccError
 from ..model import Grid, Model, Variable
 from . import ir
 from .abstract import Abstract, maybe_true
-from .domain import Expr, load_domain
-from .domain import is_file
+from .definitions import Expr
+from .domain import is_file, load_domain
 from .dungeon import Dungeon, load_dungeon, resolve_dungeon_path, shipped_dungeons
 from .emit import Emitter
 from .ir import GroundAction

@@ -137,7 +137,7 @@ def goal_text(blueprint: Blueprint, path: str) -> str:
 
 def structure_expr(blueprint: Blueprint, holder: YMap, grid_class: str, value_attr: str):
     """The goal `Expr` of the blueprint `holder` holds."""
-    from .domain import Expr
+    from .definitions import Expr
     from .source import Origin, node_pos, value_node
     line, col = node_pos(value_node(holder, "structure"))
     path = holder.src_of("structure").path

@@ -17,7 +17,8 @@ from hypothesis import strategies as st
 
 from bcc.cli import main
 from bcc.compiler import compile_dungeon
-from bcc.compiler.domain import load_domain, table_row
+from bcc.compiler.definitions import table_row
+from bcc.compiler.domain import load_domain
 from bcc.errors import BccError
 from bcc.solvers import Budget, get_solver
 

@@ -64,7 +64,10 @@ LAYER_OF = {
     "bcc.compiler.names": "front end",
     "bcc.compiler.ast": "front end",
     "bcc.compiler.parse": "front end",
+    "bcc.compiler.definitions": "front end",    # a loaded domain as data: Expr, EnumType, ClassDef, Domain, ...
     "bcc.compiler.domain": "front end",
+    "bcc.compiler.domain_enums": "front end",   # a domain's `types:` section
+    "bcc.compiler.domain_exprs": "front end",   # expression text read out of YAML and parsed
     "bcc.compiler.dungeon": "front end",
     "bcc.compiler.ground": "front end",
     "bcc.compiler.ground_effects": "front end",   # effects grounded: a mixin of the Grounder
