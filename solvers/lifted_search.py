@@ -126,6 +126,68 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
     first in first out among equals: breadth-first when every action costs 1), whose
     first plan is a cheapest one. Both use the symmetry rule, which keeps costs."""
     task = LiftedTask(dom, prob)
+    succ, h, count = _landmark_heuristic(task, prob, optimal)
+    heuristic = "blind" if optimal else "bfws-landmarks"
+    goal_test = succ.tests[0]
+    meter = Meter(budget, progress)
+    start = frozenset()
+    h0 = h(start)
+    seen: set = set()             # (landmark count, atom) pairs some state made true
+    c0 = count(start)
+    for i in task.true_atoms(start):
+        seen.add((c0, i))
+    novelty = _novelty(task, seen)
+    parents = {start: None}
+    best_g = {start: 0}           # (optimal) the cheapest known cost of each state
+    tie = itertools.count()
+    queue = [(0 if optimal else h0, 1, next(tie), start)]
+    expanded = generated = 0
+    mask = meter.mask
+
+    def finish(**kw) -> Result:
+        return meter.finish(Result(solver=solver, stored=len(parents), heuristic=heuristic,
+                                   initial_h=h0, expanded=expanded, generated=generated, **kw))
+
+    closed: set = set()
+    while queue:
+        key, _, _, s = heapq.heappop(queue)
+        if s in closed or optimal and key > best_g[s]:
+            continue
+        closed.add(s)
+        succ.begin(s)
+        if goal_test(s):
+            plan, cost = _plan_to(s, parents)
+            return finish(solved=True, status="solved", plan=plan, cost=cost)
+        expanded += 1
+        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
+            which = meter.check(expanded, generated, len(parents))
+            mask = meter.mask
+            if which:
+                return budget_result(solver, which, meter, expanded, generated, len(parents),
+                                     heuristic=heuristic, initial_h=h0)
+        gs = best_g[s] if optimal else 0
+        for name, c, t in succ(s):
+            generated += 1
+            if optimal:
+                if t in closed or best_g.get(t, gs + c + 1) <= gs + c:
+                    continue
+                best_g[t] = gs + c
+                parents[t] = (s, name, c)
+                heapq.heappush(queue, (gs + c, 0, next(tie), t))
+                continue
+            if t in parents:
+                continue
+            parents[t] = (s, name, c)
+            ht = h(t)
+            w = novelty(s, t, count(t))
+            heapq.heappush(queue, (ht, w, next(tie), t))
+    return finish(solved=False, status="no_solution", message="no plan exists: every reachable state was explored")
+
+
+def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
+    """The successor function, which also tests the goal (its test 0) and the landmarks;
+    `h(s)`, the landmark estimate (none when `optimal`: the search is blind); and
+    `count(s)`, the number of missing landmarks (novelty is judged per count)."""
     marks = [] if optimal else landmarks(task)
     dist = Distances(task)
     formulas: dict = {prob.goal: 0}
@@ -142,8 +204,6 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
         plan_h.append((test_of(m), [test_of(n) for n in ns], direct, inst))
     succ = Successors(task, list(formulas))
     tests = succ.tests
-    heuristic = "blind" if optimal else "bfws-landmarks"
-    goal_test = tests[0]
     index, n_init = task.index, task.n_init
 
     def value(s, pred, obj, cache):
@@ -173,26 +233,12 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
 
     def count(s) -> int:
         return sum(1 for mt, _, _, _ in plan_h if not tests[mt](s))
+    return succ, h, count
 
-    meter = Meter(budget, progress)
-    start = frozenset()
-    h0 = h(start)
-    seen: set = set()             # (landmark count, atom) pairs some state made true
-    c0 = count(start)
-    for i in task.true_atoms(start):
-        seen.add((c0, i))
-    parents = {start: None}
-    best_g = {start: 0}           # (optimal) the cheapest known cost of each state
-    tie = itertools.count()
-    queue = [(0 if optimal else h0, 1, next(tie), start)]
-    expanded = generated = 0
-    mask = meter.mask
-    n_init = task.n_init
 
-    def finish(**kw) -> Result:
-        return meter.finish(Result(solver=solver, stored=len(parents), heuristic=heuristic,
-                                   initial_h=h0, expanded=expanded, generated=generated, **kw))
-    atoms, of_object, width = task.atoms, task.of_object, WIDTH
+def _novelty(task: LiftedTask, seen: set):
+    """`novelty(s, t, ht)`, judged against and recorded in `seen`."""
+    atoms, of_object, width, n_init = task.atoms, task.of_object, WIDTH, task.n_init
 
     def novelty(s, t, ht) -> int:
         """1: t makes true an atom no state of landmark count ht did; 2: a pair of atoms
@@ -217,43 +263,15 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
                         seen.add(key)
                         w = min(w, 2)
         return w if width >= 2 else min(w, 2)
+    return novelty
 
-    closed: set = set()
-    while queue:
-        key, _, _, s = heapq.heappop(queue)
-        if s in closed or optimal and key > best_g[s]:
-            continue
-        closed.add(s)
-        succ.begin(s)
-        if goal_test(s):
-            plan, cost = [], 0
-            while parents[s] is not None:
-                s, name, c = parents[s]
-                plan.append(name)
-                cost += c
-            plan.reverse()
-            return finish(solved=True, status="solved", plan=plan, cost=cost)
-        expanded += 1
-        if not expanded & mask or budget.max_states is not None and len(parents) > budget.max_states:
-            which = meter.check(expanded, generated, len(parents))
-            mask = meter.mask
-            if which:
-                return budget_result(solver, which, meter, expanded, generated, len(parents),
-                                     heuristic=heuristic, initial_h=h0)
-        gs = best_g[s] if optimal else 0
-        for name, c, t in succ(s):
-            generated += 1
-            if optimal:
-                if t in closed or best_g.get(t, gs + c + 1) <= gs + c:
-                    continue
-                best_g[t] = gs + c
-                parents[t] = (s, name, c)
-                heapq.heappush(queue, (gs + c, 0, next(tie), t))
-                continue
-            if t in parents:
-                continue
-            parents[t] = (s, name, c)
-            ht = h(t)
-            w = novelty(s, t, count(t))
-            heapq.heappush(queue, (ht, w, next(tie), t))
-    return finish(solved=False, status="no_solution", message="no plan exists: every reachable state was explored")
+
+def _plan_to(s, parents: dict) -> tuple[list, int]:
+    """The actions from the start to `s` along `parents`, and their cost."""
+    plan, cost = [], 0
+    while parents[s] is not None:
+        s, name, c = parents[s]
+        plan.append(name)
+        cost += c
+    plan.reverse()
+    return plan, cost
