@@ -127,6 +127,29 @@ class Grounder:
         of_pred: dict = defaultdict(list)
         bindings: dict = defaultdict(set)
         queue = list(self.prob.init)
+        fire = self._firing(bindings, queue)
+        complete, unify = self._joining(fire, index, of_pred)
+        for r in rules:
+            if not r.pos:
+                complete(r, {}, frozenset())
+        while queue:
+            atom = queue.pop()
+            reached.add(atom)
+            pred, args = atom
+            of_pred[pred].append(args)
+            for p, o in enumerate(args):
+                index[(pred, p, o)].append(args)
+            for rule, k in by_pred.get(pred, ()):
+                env = unify(rule, rule.pos[k][1], args, {})
+                if env is not None:
+                    complete(rule, env, frozenset({k}))
+        return reached, bindings
+
+    def _firing(self, bindings: dict, queue: list):
+        """`fire(rule, env)`: a rule's match, its equalities and static negative atoms
+        checked; a new binding of an action is recorded in `bindings` and its plain add
+        effects pushed on `queue`, a conditional effect's atom pushed. The closures of
+        explore's inner loop (called per match: no extra calls)."""
         pending = set(queue)
         init = self.prob.init
         count = 0
@@ -167,7 +190,13 @@ class Grounder:
             if atom not in pending:
                 pending.add(atom)
                 queue.append(atom)
+        return fire
 
+    def _joining(self, fire, index: dict, of_pred: dict):
+        """`complete(rule, env, done)`: bind a rule's remaining positive atoms against the
+        atoms reached so far (`of_pred`, `index`), then its free parameters, and `fire`
+        each match; `unify(rule, args, fact_args, env)`: env extended by one atom, or None.
+        The closures of explore's inner loop (called per candidate: no extra calls)."""
         def complete(rule, env, done):
             """Bind the remaining positive atoms, then the free parameters, then fire."""
             best, best_bound = None, -1
@@ -221,22 +250,7 @@ class Grounder:
                 elif t != o:
                     return None
             return env2
-
-        for r in rules:
-            if not r.pos:
-                complete(r, {}, frozenset())
-        while queue:
-            atom = queue.pop()
-            reached.add(atom)
-            pred, args = atom
-            of_pred[pred].append(args)
-            for p, o in enumerate(args):
-                index[(pred, p, o)].append(args)
-            for rule, k in by_pred.get(pred, ()):
-                env = unify(rule, rule.pos[k][1], args, {})
-                if env is not None:
-                    complete(rule, env, frozenset({k}))
-        return reached, bindings
+        return complete, unify
 
     def spend(self, work: int) -> None:
         """Count `work` (candidate atoms joined, bindings of quantified variables) against max_work."""
