@@ -210,93 +210,9 @@ class BitEmitter:
         keys = [[c for c in conj if isinstance(c, int)] for conj in conjs]
         root = _tree_by_frequency(keys) if prob is None else _tree_by_pruning(keys, prob)
         expand = goal is not None or costs is not None
-        if costs is not None:
-            rank = {c: r for r, c in enumerate(sorted(set(costs)))}
-            lines = ["def expand_costs(states, g, nodes, outs):", "    get = nodes.get", "    k = 0"]
-            for c, r in rank.items():
-                lines += [f"    o{r} = outs[{r}].append", f"    g{r} = g + {int(c)}"]
-            lines.append("    for s in states:")
-        elif expand:
-            lines = ["def expand(states, seen, outs):", "    out = outs[0]", "    add = out.append", "    k = 0",
-                     "    for s in states:"]
-            goal_test = self.cond(goal, "t")
-            goal_mask = mask(_atoms(goal))
-        else:
-            lines = ["def successors(s):", "    out = []", "    add = out.append"]
-
-        def put(i, nxt, indent):
-            if not expand:
-                lines.append(f"{indent}add(({i}, {nxt}))")
-                return
-            if costs is not None:
-                r = rank[costs[i]]
-                lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}old = get(t)",
-                              f"{indent}if old is None or old[0] > g{r}:",
-                              f"{indent}    nodes[t] = (g{r}, s)", f"{indent}    o{r}(t)"])
-                return
-            lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}if t not in seen:",
-                          f"{indent}    seen[t] = s", f"{indent}    add(t)"])
-            if self.writes(actions[i].effects) & goal_mask:
-                lines.extend([f"{indent}    if {goal_test}:", f"{indent}        return ~k"])
-
-        def leaf(i, used, indent):
-            a = actions[i]
-            rest = [c for c in conjs[i] if not (isinstance(c, int) and c in used)]
-            if rest:
-                lines.append(f"{indent}if {self.conjunction(rest)}:")
-                indent += "    "
-            dels, adds, conditional = self.effects(a.effects)
-            if not conditional:
-                nxt = "s" + (f" & {~dels:#x}" if dels else "") + (f" | {adds:#x}" if adds else "")
-                put(i, nxt, indent)
-                return
-            lines.append(f"{indent}d = {dels:#x}")
-            lines.append(f"{indent}a = {adds:#x}")
-            for cond, d, ad in conditional:
-                lines.append(f"{indent}if {cond}:")
-                lines.append(f"{indent}    d |= {d:#x}")
-                lines.append(f"{indent}    a |= {ad:#x}")
-            put(i, "s & ~d | a", indent)
-
-        def single(node):
-            """The one action in `node`'s subtree, or None if it holds more."""
-            found = None
-            for atom, child in node.items():
-                for i in (child if atom is None else [single(child)]):
-                    if i is None or found is not None:
-                        return None
-                    found = i
-            return found
-
-        def emit(node, used, indent):
-            for i in node.get(None, ()):
-                leaf(i, used, indent)
-            children = sorted((atom, child) for atom, child in node.items() if atom is not None)
-            split(children, used, indent)
-
-        def split(children, used, indent):
-            """Many children: test groups of them with one mask first (recursively, FAN
-            groups a level), so a state skips every group none of whose atoms holds: a
-            wide node, e.g. one child per location of a truck, has few true atoms."""
-            if len(children) <= FAN or len(indent) >= 4 * MAX_NESTING:
-                for atom, child in children:
-                    only = single(child)
-                    if only is not None:      # one action below: all its atoms in one mask test
-                        leaf(only, used, indent)
-                        continue
-                    lines.append(f"{indent}if s & {1 << atom:#x}:")
-                    emit(child, used | {atom}, indent + "    ")
-                return
-            size = -(-len(children) // FAN)
-            for k in range(0, len(children), size):
-                group = children[k:k + size]
-                if len(group) == 1:
-                    split(group, used, indent)
-                    continue
-                lines.append(f"{indent}if s & {sum(1 << atom for atom, _ in group):#x}:")
-                split(group, used, indent + "    ")
-
-        emit(root, frozenset(), "        " if expand else "    ")
+        tree = _TreeSource(self, actions, conjs, goal, costs)
+        tree.emit(root, frozenset(), "        " if expand else "    ")
+        lines = tree.lines
         if lines[-1] == "    for s in states:":
             lines.append("        pass")     # no actions
         lines.append("    return k" if expand else "    return out")
@@ -304,3 +220,104 @@ class BitEmitter:
 
     def predicate_source(self, name: str, node) -> str:
         return f"def {name}(s):\n    return bool({self.cond(node)})"
+
+
+class _TreeSource:
+    """The lines of `successors_source`: its function's head, then the decision tree
+    (`emit`) of nested `if`s over atoms, one leaf per action that writes its next state
+    (`put`) the way the function asks: listed, stored for a layer (with the goal test),
+    or stored by cost."""
+
+    def __init__(self, em: BitEmitter, actions: list, conjs: list, goal, costs: list | None):
+        self.em, self.actions, self.conjs, self.costs = em, actions, conjs, costs
+        self.expand = goal is not None or costs is not None
+        if costs is not None:
+            self.rank = rank = {c: r for r, c in enumerate(sorted(set(costs)))}
+            lines = ["def expand_costs(states, g, nodes, outs):", "    get = nodes.get", "    k = 0"]
+            for c, r in rank.items():
+                lines += [f"    o{r} = outs[{r}].append", f"    g{r} = g + {int(c)}"]
+            lines.append("    for s in states:")
+        elif self.expand:
+            lines = ["def expand(states, seen, outs):", "    out = outs[0]", "    add = out.append", "    k = 0",
+                     "    for s in states:"]
+            self.goal_test = em.cond(goal, "t")
+            self.goal_mask = mask(_atoms(goal))
+        else:
+            lines = ["def successors(s):", "    out = []", "    add = out.append"]
+        self.lines = lines
+
+    def put(self, i, nxt, indent):
+        lines = self.lines
+        if not self.expand:
+            lines.append(f"{indent}add(({i}, {nxt}))")
+            return
+        if self.costs is not None:
+            r = self.rank[self.costs[i]]
+            lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}old = get(t)",
+                          f"{indent}if old is None or old[0] > g{r}:",
+                          f"{indent}    nodes[t] = (g{r}, s)", f"{indent}    o{r}(t)"])
+            return
+        lines.extend([f"{indent}k += 1", f"{indent}t = {nxt}", f"{indent}if t not in seen:",
+                      f"{indent}    seen[t] = s", f"{indent}    add(t)"])
+        if self.em.writes(self.actions[i].effects) & self.goal_mask:
+            lines.extend([f"{indent}    if {self.goal_test}:", f"{indent}        return ~k"])
+
+    def leaf(self, i, used, indent):
+        lines, em = self.lines, self.em
+        a = self.actions[i]
+        rest = [c for c in self.conjs[i] if not (isinstance(c, int) and c in used)]
+        if rest:
+            lines.append(f"{indent}if {em.conjunction(rest)}:")
+            indent += "    "
+        dels, adds, conditional = em.effects(a.effects)
+        if not conditional:
+            nxt = "s" + (f" & {~dels:#x}" if dels else "") + (f" | {adds:#x}" if adds else "")
+            self.put(i, nxt, indent)
+            return
+        lines.append(f"{indent}d = {dels:#x}")
+        lines.append(f"{indent}a = {adds:#x}")
+        for cond, d, ad in conditional:
+            lines.append(f"{indent}if {cond}:")
+            lines.append(f"{indent}    d |= {d:#x}")
+            lines.append(f"{indent}    a |= {ad:#x}")
+        self.put(i, "s & ~d | a", indent)
+
+    def emit(self, node, used, indent):
+        for i in node.get(None, ()):
+            self.leaf(i, used, indent)
+        children = sorted((atom, child) for atom, child in node.items() if atom is not None)
+        self.split(children, used, indent)
+
+    def split(self, children, used, indent):
+        """Many children: test groups of them with one mask first (recursively, FAN
+        groups a level), so a state skips every group none of whose atoms holds: a
+        wide node, e.g. one child per location of a truck, has few true atoms."""
+        lines = self.lines
+        if len(children) <= FAN or len(indent) >= 4 * MAX_NESTING:
+            for atom, child in children:
+                only = _single(child)
+                if only is not None:      # one action below: all its atoms in one mask test
+                    self.leaf(only, used, indent)
+                    continue
+                lines.append(f"{indent}if s & {1 << atom:#x}:")
+                self.emit(child, used | {atom}, indent + "    ")
+            return
+        size = -(-len(children) // FAN)
+        for k in range(0, len(children), size):
+            group = children[k:k + size]
+            if len(group) == 1:
+                self.split(group, used, indent)
+                continue
+            lines.append(f"{indent}if s & {sum(1 << atom for atom, _ in group):#x}:")
+            self.split(group, used, indent + "    ")
+
+
+def _single(node):
+    """The one action in `node`'s subtree, or None if it holds more."""
+    found = None
+    for atom, child in node.items():
+        for i in (child if atom is None else [_single(child)]):
+            if i is None or found is not None:
+                return None
+            found = i
+    return found
