@@ -90,6 +90,7 @@ LAYER_OF = {
     "bcc.compiler.layout": "back end",
     "bcc.compiler.emit": "back end",
     "bcc.compiler.emit_layers": "back end",   # the layer expanders, a mixin of the emitter
+    "bcc.compiler.emit_helpers": "back end",  # the run-time helpers generated code calls (cells, merges)
     "bcc.compiler.pipeline": "back end",
     "bcc.compiler.hierarchy": "back end",  # methods compiled into generated functions for one dungeon
     "bcc.pddl_io.bits": "back end",
