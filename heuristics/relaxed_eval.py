@@ -96,6 +96,7 @@ def residual(node, ev: "Evaluator", pins: dict, cells: dict, lets: dict, memo: d
 
 
 def _res(node, ev, pins, cells, lets, memo, locs):
+    """`node` residualised (see `residual`): leaves here, the other nodes by kind below."""
     t = type(node)
     if t is ir.Const:
         return node if node is BAD else _const(node.value, node.type)
@@ -111,6 +112,16 @@ def _res(node, ev, pins, cells, lets, memo, locs):
                 memo[node.name] = _res(lets[node.name], ev, pins, cells, lets, memo, locs)
             return memo[node.name]
         raise Drop(node.name)
+    if t is ir.VarAt or t is ir.Cell or t is ir.Lookup:
+        return _res_access(node, t, ev, pins, cells, lets, memo, locs)
+    if t is ir.CellLoop:
+        return _res_loop(node, ev, pins, cells, lets, memo, locs)
+    return _res_operator(node, t, ev, pins, cells, lets, memo, locs)
+
+
+def _res_access(node, t, ev, pins, cells, lets, memo, locs):
+    """A read by a key (`VarAt`), a position (`Cell`) or an index (`Lookup`): folded to
+    the variable, cell or entry when the key is known."""
     if t is ir.VarAt:
         key = _res(node.key, ev, pins, cells, lets, memo, locs)
         if key is BAD:
@@ -131,13 +142,17 @@ def _res(node, ev, pins, cells, lets, memo, locs):
                 return _const(value)
             return _const(cells[value]) if value in cells else _cell_atom(value)
         return _mk(ev, ir.Cell, *parts, node.type)
-    if t is ir.Lookup:
-        i = _res(node.index, ev, pins, cells, lets, memo, locs)
-        if i is BAD:
-            return BAD
-        if isinstance(i, ir.Const):
-            return _const(node.table[i.value], node.type) if 0 <= i.value < len(node.table) else BAD
-        return _mk(ev, ir.Lookup, node.table, i, node.type, node.label)
+    i = _res(node.index, ev, pins, cells, lets, memo, locs)
+    if i is BAD:
+        return BAD
+    if isinstance(i, ir.Const):
+        return _const(node.table[i.value], node.type) if 0 <= i.value < len(node.table) else BAD
+    return _mk(ev, ir.Lookup, node.table, i, node.type, node.label)
+
+
+def _res_operator(node, t, ev, pins, cells, lets, memo, locs):
+    """Arithmetic, comparisons and boolean operators: folded when their operands are
+    constants (`and`/`or` as soon as one item decides)."""
     if t is ir.Arith:
         a = _res(node.left, ev, pins, cells, lets, memo, locs)
         b = _res(node.right, ev, pins, cells, lets, memo, locs)
@@ -182,20 +197,23 @@ def _res(node, ev, pins, cells, lets, memo, locs):
         if not items:
             return _const(not decisive)
         return items[0] if len(items) == 1 else _mk(ev, ir.BoolOp, node.op, tuple(items))
-    if t is ir.CellLoop:
-        L = ev.L
-        if L.width * L.height * L.depth > MAX_LOOP_CELLS:
-            raise Drop("grid quantifier")
-        expanded = []
-        for y in range(L.height):
-            for z in range(L.depth):
-                for x in range(L.width):
-                    inner = dict(locs)
-                    inner.update(zip(node.names, (x, y, z)))
-                    expanded.append(_res(node.body, ev, pins, cells, lets, {}, inner))
-        return _res(ir.BoolOp("or" if node.kind == "exists" else "and", tuple(expanded)), ev, pins, cells, lets,
-                    memo, locs) if expanded else _const(node.kind != "exists")
     raise Drop(t.__name__)
+
+
+def _res_loop(node, ev, pins, cells, lets, memo, locs):
+    """A grid quantifier, expanded over every cell (small grids only: else dropped)."""
+    L = ev.L
+    if L.width * L.height * L.depth > MAX_LOOP_CELLS:
+        raise Drop("grid quantifier")
+    expanded = []
+    for y in range(L.height):
+        for z in range(L.depth):
+            for x in range(L.width):
+                inner = dict(locs)
+                inner.update(zip(node.names, (x, y, z)))
+                expanded.append(_res(node.body, ev, pins, cells, lets, {}, inner))
+    return _res(ir.BoolOp("or" if node.kind == "exists" else "and", tuple(expanded)), ev, pins, cells, lets,
+                memo, locs) if expanded else _const(node.kind != "exists")
 
 
 def _arith(op, a, b):
