@@ -1,5 +1,5 @@
 """The one backward search of the abstraction heuristics (the pattern database,
-patterns.py, and the counting abstraction, counting_build.py): the cheapest cost from
+patterns.py, and the counting abstraction, counting_explore.py): the cheapest cost from
 every abstract state to a goal state, over a list of transitions."""
 from __future__ import annotations
 

@@ -1,18 +1,18 @@
 """The counting abstraction's builder (counting.py tells the story): the cells kept
-exactly and the classes counted, the actions' touched cells, the forward exploration of
-the abstract states and the backward distances."""
+exactly and the classes counted, the actions' touched cells, and the answers for one
+abstract state (its view, its successors, its goal test) that the forward exploration
+of the abstract states and the backward distances (counting_explore.py) ask for."""
 from __future__ import annotations
 
 import array
 import itertools
-import time
 
 from ..compiler import ir
 from ..compiler.abstract import Abstract
 from ..compiler.access import CELLS, action_access, reads
-from .backward import backward_distances, ranges, unique
-from .counting_data import (MAX_EXACT, SHIFT, TOUCH_CAP, CountingDatabase, TooBig,
-                            Unsupported, cells_in, and_parts, const_value, effect_nodes, getter, has_loop, as_numbers)
+from .counting_data import (MAX_EXACT, TOUCH_CAP, CountingDatabase, TooBig,
+                            Unsupported, cells_in, and_parts, const_value, effect_nodes, getter, has_loop)
+from .counting_explore import Exploration
 
 
 class Builder:
@@ -230,145 +230,8 @@ class Builder:
     # ---- the exploration ----------------------------------------------------------------
     def run(self) -> CountingDatabase:
         """Explore the abstract states from the start's, a layer at a time, then search
-        backward by cost. A state is numbered by its variables' id and its cell part's
-        id (the exact cells, then the counts, 2 bytes each): `vid << SHIFT | rid`.
-
-        Actions that touch no mutable cell (turning, looking) move from variables to
-        variables whatever the cells hold: their successors are a table by variables id,
-        applied to a whole layer at once in numpy. What the other actions do depends on
-        the variables and, of the cell part, only on the bytes their touched cells'
-        values are read from (the *view*, `_seen`): memoized by (variables id, view); what
-        a change does to the cells depends on the cell part only, memoized by id."""
-        import numpy as np
-        from ..model import cell_entries
-        variables = {self.initial: 0}
-        var_list = [self.initial]
-        parts = {self.start_exact + bytes(2 * self.n_slots): 0}
-        part_list = list(parts)
-        # by cell part id, what the touched cells may hold: counts capped at 1 (for plans
-        # whose actions touch one cell each) and at TOUCH_CAP
-        seen_one, seen_more = [self._seen(part_list[0], 1)], [self._seen(part_list[0], TOUCH_CAP)]
-        views: list = []         # by variables id: (view function, its actions that touch cells, seen list)
-        free_ptr, free_dst, free_cost = [0], [], []   # by variables id: successors of the others
-        successors: dict = {}    # (variables id, view) -> ((next variables id, changes, cost), ...)
-        choices_of: dict = {}    # (cell part id, kinds) -> the value choices of the touched cells
-        outcomes: dict = {}      # (action, variables id, values of the touched cells) -> ((next variables id, changes), ...)
-        moved: dict = {}         # (cell part id, changes) -> next cell part id
-        goal_memo: dict = {}
-        goal_class: list = []    # by variables id: the id of the goal's variables' values
-        goal_classes: dict = {}
-        goal_vars: list = []     # by goal class: a variables id of that class
-        gclass = np.zeros(0, dtype=np.int64)
-        goal_idx = sorted(self.L.by_var[v].index for v in self.goal_vars if v in self.L.by_var)
-        goal_of = getter(goal_idx)
-        costs = [a.cost for a in self.actions]
-        check_cells = self.failure_reads_cells
-        max_states, deadline = self.max_states, self.deadline
-        uniform = len({costs[i] for i in self.search}) <= 1
-        mask = (1 << SHIFT) - 1
-
-        def var_id(vb: bytes) -> int:
-            found = variables.get(vb)
-            if found is None:
-                found = variables[vb] = len(var_list)
-                var_list.append(vb)
-            return found
-
-        known = np.zeros(1, dtype=np.int64)          # every state met, sorted
-        frontier = known
-        edge_src, edge_dst, edge_cost, goals = [], [], [], []
-        fptr, fdst, fcost = np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0)
-        while len(frontier):
-            keys = frontier.tolist()
-            vmax = int(frontier.max()) >> SHIFT
-            while vmax >= len(views):   # the variables' plan and goal class, once each
-                vb = var_list[len(views)]
-                view_of, cell_plan, free, cap = self._view(self._plan(vb, cell_entries, check_cells), var_id, costs)
-                views.append((view_of, cell_plan, seen_one if cap == 1 else seen_more))
-                free_dst.extend(nvid for nvid, _ in free)
-                free_cost.extend(c for _, c in free)
-                free_ptr.append(len(free_dst))
-                gk = goal_of(vb)
-                if gk not in goal_classes:
-                    goal_classes[gk] = len(goal_classes)
-                    goal_vars.append(len(views) - 1)   # a variables id with these goal values
-                goal_class.append(goal_classes[gk])
-            if len(fptr) != len(free_ptr):   # the new variables' rows
-                fptr = np.concatenate((fptr, np.array(free_ptr[len(fptr):], dtype=np.int64)))
-                fdst = np.concatenate((fdst, np.array(free_dst[len(fdst):], dtype=np.int64) << SHIFT))
-                fcost = np.concatenate((fcost, np.array(free_cost[len(fcost):], dtype=np.float64)))
-            src, dst, cost = array.array("q"), array.array("q"), array.array("d")
-            for n, key in enumerate(keys):
-                if n & 8191 == 8191 and time.process_time() > deadline:
-                    raise TooBig("the time limit ran out", timed_out=True)
-                vid, rid = key >> SHIFT, key & mask
-                view_of, cell_plan, seen_of = views[vid]
-                if not cell_plan:
-                    continue
-                skey = (vid, view_of(seen_of[rid])) if view_of is not None else (vid, None, rid)
-                succ = successors.get(skey)
-                if succ is None:
-                    succ = successors[skey] = self._cell_successors(vid, var_list[vid], rid, part_list[rid], cell_plan,
-                                                                    var_id, costs, cell_entries, choices_of, outcomes)
-                for nvid, changes, c in succ:
-                    if changes:
-                        mkey = (rid, changes)
-                        nrid = moved.get(mkey)
-                        if nrid is None:
-                            nb = self._moved(part_list[rid], changes)
-                            nrid = parts.get(nb)
-                            if nrid is None:
-                                nrid = parts[nb] = len(part_list)
-                                part_list.append(nb)
-                                seen_one.append(self._seen(nb, 1))
-                                seen_more.append(self._seen(nb, TOUCH_CAP))
-                            moved[mkey] = nrid
-                    else:
-                        nrid = rid
-                    nkey = nvid << SHIFT | nrid
-                    if nkey != key:
-                        src.append(key)
-                        dst.append(nkey)
-                        if not uniform:
-                            cost.append(c)
-            vids, rids = frontier >> SHIFT, frontier & mask
-            # the goal test, once per (the goal's variables' values, cell part)
-            if len(gclass) != len(goal_class):
-                gclass = np.concatenate((gclass, np.array(goal_class[len(gclass):], dtype=np.int64)))
-            gkeys = gclass[vids] << SHIFT | rids
-            distinct = unique(gkeys)
-            for gkey in distinct.tolist():
-                if gkey not in goal_memo:
-                    goal_memo[gkey] = bool(self._goal(var_list[goal_vars[gkey >> SHIFT]], part_list[gkey & mask]))
-            met_goal = np.array([goal_memo[g] for g in distinct.tolist()], dtype=bool)
-            goals.append(frontier[met_goal[np.searchsorted(distinct, gkeys)]])
-            # the actions that touch no cell, for the whole layer
-            idx, total = ranges(fptr[vids], fptr[vids + 1])
-            layer_dst = np.concatenate((fdst[idx] | np.repeat(rids, total), np.frombuffer(dst, dtype=np.int64)))
-            edge_src.append(np.concatenate((np.repeat(frontier, total), np.frombuffer(src, dtype=np.int64))))
-            edge_dst.append(layer_dst)
-            if not uniform:
-                edge_cost.append(np.concatenate((fcost[idx], np.frombuffer(cost, dtype=np.float64))))
-            met = unique(layer_dst)
-            pos = np.searchsorted(known, met)
-            fresh = (pos >= len(known)) | (known[np.minimum(pos, len(known) - 1)] != met)
-            frontier = met[fresh]
-            known = np.insert(known, pos[fresh], frontier)
-            if len(known) > max_states or len(part_list) > mask:
-                raise TooBig(f"more than {max_states:,} abstract states")
-            if time.process_time() > deadline:
-                raise TooBig("the time limit ran out", timed_out=True)
-        s_idx = np.searchsorted(known, np.concatenate(edge_src)).astype(np.int32)
-        d_idx = np.searchsorted(known, np.concatenate(edge_dst)).astype(np.int32)
-        if uniform:
-            c_all = np.full(len(s_idx), float(costs[self.search[0]] if self.search else 1))
-        else:
-            c_all = np.concatenate(edge_cost)
-        dist = backward_distances(len(known), s_idx, d_idx, c_all, np.searchsorted(known, np.concatenate(goals)))
-        table = dict(zip(known.tolist(), as_numbers(dist)))
-        return CountingDatabase(self.base, dict(self.exact), self.start_exact, dict(self.tracked), self.n_slots,
-                                variables, parts, table, len(known),
-                                tuple((j, self.initial[j]) for j, _ in self.projected))
+        backward by cost (counting_explore.py)."""
+        return Exploration(self).run()
 
     def _seen(self, part: bytes, cap: int) -> bytes:
         """What a cell part tells actions that touch at most `cap` cells each: the exact
