@@ -65,10 +65,10 @@ def rename_world(dungeon: Path, out: Path, seed: int = 0) -> tuple[Path, dict, l
     renaming, the names kept because the format reserves them)."""
     from bcc.compiler.source import load_yaml
     files = chain(dungeon)
-    names = set()
+    domain_names = [str(load_yaml(f)["domain"]) for f in files]   # nearest first, as `files`
+    names = set(domain_names)
     for f in files:
         names |= defined_names(f)
-        names.add(str(load_yaml(f)["domain"]))
     kept = sorted(names & RESERVED)
     order = sorted(names - RESERVED)
     random.Random(seed).shuffle(order)
@@ -79,17 +79,15 @@ def rename_world(dungeon: Path, out: Path, seed: int = 0) -> tuple[Path, dict, l
     def rename(text: str) -> str:
         return word.sub(lambda m: mapping[m.group(1)], text)
     out.mkdir(parents=True, exist_ok=True)
-    for f in files:       # `extends: NAME` and `domain: NAME` now name the renamed file beside it
-        (out / f"{mapping[str(load_yaml(f)['domain'])]}.yaml").write_text(rename(f.read_text()))
+    renamed = [mapping[name] for name in domain_names]
+    for k, f in enumerate(files):    # `extends:` names the renamed file of the next domain, beside it
+        text = rename(f.read_text())
+        if k + 1 < len(files):
+            text = re.sub(r"(?m)^extends:.*$", f"extends: {renamed[k + 1]}.yaml", text)
+        (out / f"{renamed[k]}.yaml").write_text(text)
     target = out / f"renamed_{dungeon.name}"
-    text = rename(dungeon.read_text())
-    new_domain = mapping[str(load_yaml(files[0])["domain"])]
-    text = re.sub(r"(?m)^domain:.*$", f"domain: {(out / new_domain).resolve()}.yaml", text)
+    text = re.sub(r"(?m)^domain:.*$", f"domain: {(out / renamed[0]).resolve()}.yaml", rename(dungeon.read_text()))
     target.write_text(text)
-    for f in files[:-1]:
-        renamed_file = out / f"{mapping[str(load_yaml(f)['domain'])]}.yaml"
-        base = mapping[str(load_yaml(files[files.index(f) + 1])["domain"])]
-        renamed_file.write_text(re.sub(r"(?m)^extends:.*$", f"extends: {base}.yaml", renamed_file.read_text()))
     return target, mapping, kept
 
 

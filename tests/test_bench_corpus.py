@@ -1,13 +1,14 @@
 """bench/corpus.py on a small pairs file of its own: the pooled figures are run on each
 shuffle and the reported figure is their mean; each shuffle's figures are those of
 `bcc corpus evaluate`'s folds with that seed."""
-import importlib.util
 import json
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from bench_harness import load_bench
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -17,13 +18,6 @@ CHAIR = {"blue": ["take the chair to the blue room", "push the chair into the bl
                   "bring the chair to the purple room", "move the chair to blue"],
          "green": ["take the chair to the green room", "push the chair into the green room",
                    "bring the chair to green", "move the chair to the green room"]}
-
-
-def load_bench():
-    spec = importlib.util.spec_from_file_location("corpus_bench", ROOT / "bench" / "corpus.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def pairs_file(path: Path) -> Path:
@@ -38,7 +32,7 @@ def pairs_file(path: Path) -> Path:
 
 
 def test_mean_of_shuffles_averages_each_level_and_keeps_the_shuffles():
-    bench = load_bench()
+    bench = load_bench("corpus")
     by_seed = {"0": {"pooled": {"L0": 80.0, "L1": 90.0}, "overall": 85.0, "train_seconds": 1.0},
                "1": {"pooled": {"L0": 70.0, "L1": 85.0}, "overall": 77.5, "train_seconds": 3.0}}
     entry = bench.mean_of_shuffles(by_seed)
@@ -49,7 +43,7 @@ def test_mean_of_shuffles_averages_each_level_and_keeps_the_shuffles():
 
 @pytest.mark.parametrize("text", ["", "0,0", "a", "1;2"])
 def test_seeds_must_be_distinct_numbers(text):
-    bench = load_bench()
+    bench = load_bench("corpus")
     with pytest.raises(SystemExit) as exc:
         bench.main(["--seeds", text])
     assert exc.value.code == 2

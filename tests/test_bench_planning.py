@@ -1,24 +1,18 @@
 """bench/planning.py on the hand-written problems of tests/pddl (a manifest of its own):
 it runs every configuration, checks costs across the optimal ones and writes its JSON."""
-import importlib.util
 import json
 from pathlib import Path
 
 import pytest
 
+from bench_harness import load_bench
+
 ROOT = Path(__file__).resolve().parent.parent
-
-
-def load_bench():
-    spec = importlib.util.spec_from_file_location("planning_bench", ROOT / "bench" / "planning.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.mark.slow
 def test_the_planning_benchmark_reports_coverage_and_checks_costs(tmp_path):
-    bench = load_bench()
+    bench = load_bench("planning")
     from bcc.solvers.fast_downward import available
     manifest = tmp_path / "manifest.txt"
     manifest.write_text("# local problems\n"
@@ -44,7 +38,7 @@ def test_the_second_validator_replays_plans_on_fast_downwards_translation(tmp_pa
     from bcc.solvers.fast_downward import available
     if not available():
         pytest.skip("Fast Downward is not installed (pip install '.[pddl]')")
-    bench = load_bench()
+    bench = load_bench("planning")
     domain, problem = str(ROOT / "tests" / "pddl" / "road-domain.pddl"), str(ROOT / "tests" / "pddl" / "road-1.pddl")
     cases = {"(drive a b)\n(drive b c)\n": "valid",                           # the optimum, by hand
              "(drive a c)\n": "valid",                                        # dearer, still a plan
@@ -60,7 +54,7 @@ def test_the_second_validator_replays_plans_on_fast_downwards_translation(tmp_pa
 def test_combining_runs_merges_configurations_and_says_where_each_came_from(tmp_path):
     # Fast Downward's rows from an earlier run (reused), bcc's from a fresh one: merged per
     # problem, and the JSON names each part's file, configurations and note.
-    bench = load_bench()
+    bench = load_bench("planning")
 
     def part(name, configs, cost, note=None):
         runs = {c: {"config": c, "seconds": 1.0, "cpu_seconds": 0.5, "solved": True, "status": "solved",

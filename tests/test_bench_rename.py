@@ -1,26 +1,16 @@
 """bench/rename_world.py: a copy of a dungeon and its domain chain with every name the
 domains define renamed is the same problem -- the build solver finds the same plan
 (renamed back) with the same expansions -- and no renamed name is left in the files."""
-import importlib.util
 import re
-from pathlib import Path
 
 from bcc.compiler import compile_dungeon
 from bcc.generate_structures import generate_structure
 from bcc.solvers import Budget, get_solver
-
-ROOT = Path(__file__).resolve().parent.parent
-
-
-def load_bench():
-    spec = importlib.util.spec_from_file_location("rename_world", ROOT / "bench" / "rename_world.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+from bench_harness import load_bench
 
 
 def test_a_renamed_world_is_the_same_problem(tmp_path):
-    bench = load_bench()
+    bench = load_bench("rename_world")
     original = tmp_path / "wall.yaml"
     original.write_text(generate_structure("wall", 3, 1, 2, material="planks"))
     renamed, mapping, kept = bench.rename_world(original, tmp_path / "renamed", seed=3)

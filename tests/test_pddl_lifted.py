@@ -171,10 +171,8 @@ def test_cli_lifted_gbfs_plan_prints_action_per_line():
 
 def test_renamed_task_is_searched_in_the_same_order(tmp_path):
     """Every predicate, action, type and object renamed: the same plan, renamed."""
-    import importlib.util
-    spec = importlib.util.spec_from_file_location("mp", Path(__file__).parent.parent / "bench" / "mineplanner_pddl.py")
-    mp = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mp)
+    from bench_harness import load_bench
+    mp = load_bench("mineplanner_pddl")
     d, p = files("tokens-2")
     domain, problem = mp.parse(Path(d).read_text()), mp.parse(Path(p).read_text())
     names = mp.renaming(domain, problem)
