@@ -32,13 +32,21 @@ class Grounder(EffectGrounder):
         self.sizes = dungeon.sizes
         self.by_class = {c: [n for n, (oc, _) in dungeon.objects.items() if oc == c] for c in self.dom.classes}
         self.fresh = itertools.count()
+        self.fresh_used = 0  # names `fresh` handed out (a call whose grounding takes none may be reused)
         self.depth = 0  # of `expr` calls in progress: bounds the nesting of the code emitted
+        self.peak = 0   # the deepest `expr` call so far
+        self.calls: dict = {}   # (function, its grounded arguments) -> (its grounding, nesting it took)
         self.writes: list = []  # (class, attr) or ("<grid>", y IR), recorded by effects
         self.effect_work = 0    # effect nodes grounded so far: bounds what nested first/forall multiply
         self.ranges: dict = {}  # (class, attribute) -> its range, once grounded
         self.key_ranges = {c.name: self._key_ranges(c) for c in self.dom.classes.values() if c.key}
 
     # ---- helpers ---------------------------------------------------------------------
+    def next_fresh(self) -> int:
+        """A number for a name no other grounding uses."""
+        self.fresh_used += 1
+        return next(self.fresh)
+
     def attr_range(self, cls: ClassDef, attr: str) -> tuple[int, int] | None:
         key = (cls.name, attr)
         if key not in self.ranges:   # its bounds are constant expressions: grounded once
@@ -129,6 +137,8 @@ class Grounder(EffectGrounder):
     def expr(self, node, ctx: Ctx, hint: str | None = None):
         method = getattr(self, "x_" + type(node).__name__)
         self.depth += 1
+        if self.depth > self.peak:
+            self.peak = self.depth
         try:
             if self.depth > MAX_GROUND_DEPTH:
                 raise ctx.error(node, f"the expression is nested more than {MAX_GROUND_DEPTH} levels deep "
@@ -281,13 +291,35 @@ class Grounder(EffectGrounder):
             bound[param.name] = value
         if by_type:
             return self.call_by_type(node, ctx, fdef, bound, by_type)
-        inner = Ctx(fdef.body, bound, ctx.stack + (node.func,))
+        return self.expand_call(node, ctx, fdef, bound)
+
+    def expand_call(self, node, ctx, fdef, bound: dict):
+        """The function's body with its parameters bound. A body depends on nothing but its
+        arguments, so a call repeated with the same grounded arguments (`roomFor(t)` once per
+        item a move may pick up) reuses the first grounding: the same IR, unless the first
+        took fresh names (those are handed out again) or the repeat runs deeper than the
+        nesting bound allows (then it is grounded again, to raise the error)."""
+        key = (fdef.name, tuple(bound.items()))
         try:
-            return self.expr(fdef.body.node, inner)
+            hit = self.calls.get(key)
+        except TypeError:        # an argument that cannot be hashed: ground it each time
+            key, hit = None, None
+        if hit is not None and self.depth + hit[1] <= MAX_GROUND_DEPTH:
+            self.peak = max(self.peak, self.depth + hit[1])
+            return hit[0]
+        inner = Ctx(fdef.body, bound, ctx.stack + (node.func,))
+        used, peak, self.peak = self.fresh_used, self.peak, self.depth
+        try:
+            value = self.expr(fdef.body.node, inner)
         except BccError as exc:
             if exc.path == fdef.body.where.path and ctx.src.where.path != exc.path:
                 exc.message += f" (in {node.func}, called at {ctx.src.where.path}:{ctx.src.where.locate(*node.pos)[0]})"
             raise
+        finally:
+            deeper, self.peak = self.peak - self.depth, max(peak, self.peak)
+        if key is not None and self.fresh_used == used:
+            self.calls[key] = (value, deeper)
+        return value
 
     def call_by_type(self, node, ctx, fdef, bound, by_type):
         """f(..., T, ...) where f wants a keyed object and T is a value of its value attribute:
@@ -296,7 +328,7 @@ class Grounder(EffectGrounder):
         args, conds = [], []
         by_name = {p.name: (attr, value) for p, attr, value in by_type}
         for param in fdef.params:
-            fresh = f"__{param.name}{next(self.fresh)}"
+            fresh = f"__{param.name}{self.next_fresh()}"
             if param.name in by_name:
                 attr, value = by_name[param.name]
                 tname = fresh + "t"
@@ -406,7 +438,7 @@ class Grounder(EffectGrounder):
         """Over every cell, unless `exists` conjuncts pin each key (`b.x == a.x and ...`):
         then it is one lookup of that cell, guarded by the key ranges."""
         cdef = self.dom.classes[node.cls]
-        n = next(self.fresh)
+        n = self.next_fresh()
         names = tuple(f"q{n}_{k}" for k in cdef.key)
         ref = KeyRef(node.cls, tuple(ir.Local(nm, "int") for nm in names))
         body = self.bool_expr(node.body, ctx.bind(**{node.var: ref}))

@@ -171,3 +171,21 @@ def test_the_box_reader_is_the_union_of_its_cells(data):
     for x, y, z in itertools.product(xs, ys, zs):
         expected |= cell(x, y, z)
     assert an.box(written)(xs, ys, zs) == frozenset(expected)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.sampled_from(["==", "!=", "<", "<=", ">", ">="]),
+       st.frozensets(st.integers(-3, 5), min_size=1, max_size=5),
+       st.frozensets(st.integers(-3, 5), min_size=1, max_size=5))
+def test_a_comparison_of_two_value_sets_has_the_outcomes_of_its_pairs(op, a, b):
+    """The abstract comparison of two sets (compiler/abstract.py: by meeting sets and by
+    bounds, without the pairs) answers what comparing every pair of values does."""
+    import itertools
+
+    from bcc.compiler import ir
+    from bcc.compiler.abstract import _CMP, Abstract
+
+    left, right = ir.Local("l", "int"), ir.Local("r", "int")
+    ab = Abstract({}, None, pins={left: a, right: b})
+    got = ab.eval(ir.Cmp((op,), (left, right)))
+    assert got == frozenset(_CMP[op](x, y) for x, y in itertools.product(a, b))

@@ -82,6 +82,14 @@ DOMAIN_CASES = {
                                                               f"  f{i}:\n    params: {{a: agent}}\n    body: {'not ' * 30}f{i - 1}(a)\n"
                                                               for i in range(1, 4)), 1),
                                         rf"more than {MAX_GROUND_DEPTH} levels deep once the functions"),
+    # f0 is about 28 levels deep: called alone it fits, under 30 `not`s it does not; the
+    # second call repeats the first's arguments, so the grounder's reuse of a call's
+    # grounding must still see the limit
+    "a function repeated past the limit": (MINECRAFT.replace("functions:\n", "functions:\n  f0:\n    params: {a: agent}\n"
+                                                             f"    body: {'not ' * 25}a.x > 0\n", 1).replace(
+        "  look_down:\n    params: {a: agent}\n",
+        f"  look_down:\n    params: {{a: agent}}\n    pre: [f0(a), {'not ' * 30}f0(a)]\n"),
+        rf"more than {MAX_GROUND_DEPTH} levels deep once the functions"),
     "a keyed class of 2^40 objects": (MINECRAFT.replace("slot: {type: int, range: [0, 8]}",
                                                         "slot: {type: int, range: [0, 1099511627775]}"), r"too large"),
     "an effect sets a constant out of range": (MINECRAFT.replace("effect: a.verticalDirection = 1",
