@@ -89,12 +89,13 @@ def goal_model(model_ref: str, task: str) -> Model:
 
 
 def plan(model_ref: str, task: str, start: bytes | None, budget):
-    """Solve the chosen task with A* from `start` (default: the dungeon's start)."""
-    from ..solvers import get_solver
+    """Solve the chosen task with A* from `start` (default: the dungeon's start), on the
+    one run path every edge takes (run/solve.py); the caller bounds the process."""
+    from ..run.solve import Request, run
     goal_model_: Model = goal_model(model_ref, task)
     options = {}
     if start is not None and start != goal_model_.initial:
         # the pattern database is built for the compiled start; Manhattan holds from anywhere
         goal_model_ = dataclasses.replace(goal_model_, initial=start)
         options["heuristic"] = "manhattan"
-    return get_solver("astar")(goal_model_, budget, **options)
+    return run(Request(load=lambda: goal_model_, solver="astar", options=options, budget=budget, hard=False)).result
