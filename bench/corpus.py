@@ -94,7 +94,8 @@ def _nested(rows, folds, seeds, workers, save=None, done=None) -> dict:
         by_seed[str(seed)] = {"pooled": {lv: 100 * v["accuracy"] for lv, v in r["by_level"].items()},
                               "overall": 100 * r["accuracy"], "train_seconds": r["train_seconds"],
                               "chosen": dict(Counter(c["config"] for c in r["chosen"])),
-                              "inner_accuracy": [c["inner_accuracy"] for c in r["chosen"]]}
+                              "inner_accuracy": [c["inner_accuracy"] for c in r["chosen"]],
+                              "votes": [c["votes"] for c in r["chosen"]]}
         print(f"[nested] seed {seed}: {100 * r['accuracy']:.1f} % in {time.perf_counter() - t0:.0f} s "
               f"({', '.join(f'{lv} {v:.1f}' for lv, v in by_seed[str(seed)]['pooled'].items())})", file=sys.stderr)
         if save:       # each shuffle as it ends: a run cut short still leaves its finished shuffles
@@ -231,7 +232,7 @@ def _resumable(args, output: str, rows, folds) -> dict:
     except (OSError, ValueError):
         return {}
     same = (old.get("count") == len(rows) and old.get("folds") == folds and old.get("inner_folds") == nested.INNER
-            and old.get("configs") == {name: list(w) for name, w in nested.CONFIGS}
+            and old.get("configs") == {name: None if w is None else list(w) for name, w in nested.CONFIGS}
             and old.get("pool") == [name for name, _, _ in nested.POOL])
     if not same:
         print(f"[nested] {output} was written with other settings: every shuffle runs", file=sys.stderr)
@@ -246,7 +247,7 @@ def _report_nested(args, rows, levels, folds, seeds) -> int:
 
     def save(result, limits=None):
         out = {"pairs": args.pairs, "count": len(rows), "model": MODEL, "folds": folds, "inner_folds": nested.INNER,
-               "configs": {name: list(w) for name, w in nested.CONFIGS}, "pool": [name for name, _, _ in nested.POOL],
+               "configs": {name: None if w is None else list(w) for name, w in nested.CONFIGS}, "pool": [name for name, _, _ in nested.POOL],
                "seeds": seeds, "finished_seeds": len(result["by_seed"]), "target": TARGET,
                "target_mean": NESTED_MEAN_TARGET, "nested": result,
                "python": sys.version.split()[0], "machine": platform.machine()}

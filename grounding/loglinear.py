@@ -64,8 +64,9 @@ def task_features(task: str, agent: str = "agent", factored: bool = True) -> lis
     return out
 
 
-def command_features(tokens: list[str], skips: int = 0) -> list[str]:
-    """The command's features; `skips` > 1 adds pairs of words up to that many apart (`s:`)."""
+def command_features(tokens: list[str], skips: int = 0, chars: int = 0) -> list[str]:
+    """The command's features; `skips` > 1 adds pairs of words up to that many apart (`s:`),
+    `chars` > 1 the letter n-grams of each word, 2 to `chars` letters (`g:`)."""
     out = ["<bias>"]
     m = len(tokens)
     for j, w in enumerate(tokens):
@@ -80,7 +81,20 @@ def command_features(tokens: list[str], skips: int = 0) -> list[str]:
     # a word said again and again ("go to the door ... the door ... the door"): how many
     # rooms a route crosses, and so whether the agent comes back
     out += [f"c{min(n, 3)}:{w}" for w, n in Counter(tokens).items() if n >= 2]
+    if chars > 1:
+        out += letter_ngrams(tokens, chars)
     return list(dict.fromkeys(out))
+
+
+def letter_ngrams(tokens: list[str], longest: int) -> list[str]:
+    """Each word's letter n-grams of 2 to `longest` letters, the word padded by a space at
+    either end (scikit-learn's analyzer="char_wb"): "rooom" and "room" share " ro", "roo"
+    and "om ", "going" and "go" share " go"."""
+    out = []
+    for w in dict.fromkeys(tokens):
+        padded = f" {w} "
+        out += [f"g:{padded[i:i + n]}" for n in range(2, longest + 1) for i in range(len(padded) - n + 1)]
+    return out
 
 
 class _Segments:
@@ -110,14 +124,14 @@ def task_matrix(tasks: list[str], task_index: dict, factored: bool = True) -> np
     return T
 
 
-def index_features(examples: list, skips: int = 0, factored: bool = True) -> tuple:
+def index_features(examples: list, skips: int = 0, factored: bool = True, chars: int = 0) -> tuple:
     """(speller, each example's command features, command feature -> index, task feature ->
     index) for training examples (command, candidates, target): the speller learns the
     examples' words; a command feature must occur in MIN_COUNT commands (on 50 examples or
     more: a feature of a single command says more about that command than about the
     language); task features are those of every candidate."""
     speller = Speller.learn(c for c, _, _ in examples)
-    feats = [command_features(speller.normalise(c), skips) for c, _, _ in examples]
+    feats = [command_features(speller.normalise(c), skips, chars) for c, _, _ in examples]
     counts = Counter(f for fs in feats for f in fs)
     least = MIN_COUNT if len(examples) >= 50 else 1
     command_index = {f: i for i, f in enumerate(sorted(f for f, c in counts.items() if c >= least))}
@@ -135,23 +149,23 @@ class FeatureModel(JsonModelFile):
     words it knows, and whether it can score given tasks; and reading those from a file."""
 
     def __init__(self, command_index: dict, task_index: dict, speller: Speller, pairs: int = 0,
-                 iterations: int = 0, skips: int = 0, factored: bool = True):
+                 iterations: int = 0, skips: int = 0, factored: bool = True, chars: int = 0):
         self.command_index, self.task_index = command_index, task_index
         self.speller = speller
         self.pairs, self.iterations = pairs, iterations
-        self.skips, self.factored = skips, factored
+        self.skips, self.factored, self.chars = skips, factored, chars
         self.vocabulary = {f[2:] for f in command_index if f.startswith("w:")}
 
     @staticmethod
     def read_features(data) -> tuple[dict, dict, Speller, dict]:
         """The fields every feature model's file holds: (command feature -> index, task
-        feature -> index, the speller, {pairs, skips, factored}). Raises KeyError, TypeError,
+        feature -> index, the speller, {pairs, skips, factored, chars}). Raises KeyError, TypeError,
         ValueError or AttributeError on malformed fields (from_json turns them into one line)."""
         cf, tf = [str(x) for x in data["command_features"]], [str(x) for x in data["task_features"]]
         counts = {str(w): int(c) for w, c in data["word_counts"].items()}
         return ({f: i for i, f in enumerate(cf)}, {f: i for i, f in enumerate(tf)}, Speller(counts),
                 {"pairs": int(data.get("pairs", 0)), "skips": int(data.get("skips", 0)),
-                 "factored": _flag(data.get("factored", True))})
+                 "factored": _flag(data.get("factored", True)), "chars": int(data.get("chars", 0))})
 
     def tokens(self, command: str) -> list[str]:
         return self.speller.normalise(command)
@@ -169,13 +183,14 @@ class LogLinear(FeatureModel):
     """The trained model: feature indices, the weight matrix and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, weights: np.ndarray, speller: Speller,
-                 pairs: int = 0, iterations: int = 0, skips: int = 0, factored: bool = True):
-        super().__init__(command_index, task_index, speller, pairs, iterations, skips, factored)
+                 pairs: int = 0, iterations: int = 0, skips: int = 0, factored: bool = True, chars: int = 0):
+        super().__init__(command_index, task_index, speller, pairs, iterations, skips, factored, chars)
         self.W = weights
 
     # ---- interpreting ------------------------------------------------------------------
     def _command_vector(self, tokens: list[str]) -> np.ndarray:
-        idx = [self.command_index[f] for f in command_features(tokens, self.skips) if f in self.command_index]
+        idx = [self.command_index[f] for f in command_features(tokens, self.skips, self.chars)
+               if f in self.command_index]
         return self.W[idx].sum(axis=0)
 
     def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
@@ -187,11 +202,11 @@ class LogLinear(FeatureModel):
     # ---- training ----------------------------------------------------------------------
     @classmethod
     def train(cls, examples: list, iterations: int = ITERATIONS, l2: float = L2, skips: int = 0,
-              factored: bool = True) -> LogLinear:
+              factored: bool = True, chars: int = 0) -> LogLinear:
         """`examples`: (command text, candidate task texts, {task text: weight}) -- the weights of
         the pair's task (one task weighted 1 when known, a demonstration's explanations when not);
         every weighted task must be among the candidates."""
-        speller, feats, command_index, task_index = index_features(examples, skips, factored)
+        speller, feats, command_index, task_index = index_features(examples, skips, factored, chars)
         prepared = [(fs, list(candidates), target) for fs, (_, candidates, target) in zip(feats, examples)]
         n, dc, dt = len(prepared), len(command_index), len(task_index)
         rows, cols = [], []
@@ -236,13 +251,12 @@ class LogLinear(FeatureModel):
         fit = minimize(value_and_gradient, np.zeros(dc * dt), jac=True, method="L-BFGS-B",
                        options={"maxiter": iterations, "maxcor": 10, "gtol": 1e-6, "ftol": 1e-10})
         return cls(command_index, task_index, fit.x.reshape(dc, dt), speller, pairs=n, iterations=int(fit.nit),
-                   skips=skips,
-                   factored=factored)
+                   skips=skips, factored=factored, chars=chars)
 
     # ---- files -------------------------------------------------------------------------
     def to_json(self) -> dict:
         return {"format": FORMAT, "pairs": self.pairs, "iterations": self.iterations, "skips": self.skips,
-                "factored": self.factored,
+                "factored": self.factored, **({"chars": self.chars} if self.chars else {}),
                 "command_features": sorted(self.command_index, key=self.command_index.get),
                 "task_features": sorted(self.task_index, key=self.task_index.get),
                 "weights": [[round(float(x), 4) for x in row] for row in self.W],

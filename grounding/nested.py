@@ -17,6 +17,9 @@ and one of the chosen members on all of them -- about three times plain cross-va
 """
 from __future__ import annotations
 
+import numpy as np
+from scipy.optimize import minimize
+
 from .bayes import NaiveBayes
 from .ensemble import Ensemble, vote
 from .loglinear import LogLinear
@@ -28,47 +31,95 @@ POOL = (("words", LogLinear, {"skips": 0}),
         ("skips", LogLinear, {"skips": 4}),
         ("whole", LogLinear, {"skips": 0, "factored": False}),
         ("bayes", NaiveBayes, {}),
-        ("network", Network, {}))
+        ("network", Network, {}),
+        ("letters", LogLinear, {"skips": 0, "factored": False, "chars": 4}))
+STACKED = "stacked"
 # (name, one vote per POOL member): at most about a dozen, so that luck on the inner folds
-# has few tries; the shipped votes first (ensemble.MEMBERS)
-CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5)),
-           ("equal", (1, 1, 1, 1, 1)),
-           ("no-bayes", (1, 1, 1, 0, 1.5)),
-           ("network-3", (1, 1, 1, 0.2, 3)),
-           ("network-0.75", (1, 1, 1, 0.2, 0.75)),
-           ("log-linear", (1, 1, 1, 0.2, 0)),
-           ("network-alone", (0, 0, 0, 0, 1)),
-           ("whole-2", (1, 1, 2, 0.2, 1.5)),
-           ("factored", (1, 1, 0, 0.2, 1.5)),
-           ("bayes-0.5", (1, 1, 1, 0.5, 1.5)),
-           ("no-skips", (1, 0, 1, 0.2, 1.5)))
+# has few tries; the shipped votes first (ensemble.MEMBERS). STACKED has no fixed votes:
+# they are fitted to the inner held-out scores (stack_votes).
+CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5, 0)),
+           ("no-bayes", (1, 1, 1, 0, 1.5, 0)),
+           ("network-3", (1, 1, 1, 0.2, 3, 0)),
+           ("network-0.75", (1, 1, 1, 0.2, 0.75, 0)),
+           ("network-alone", (0, 0, 0, 0, 1, 0)),
+           ("whole-2", (1, 1, 2, 0.2, 1.5, 0)),
+           ("factored", (1, 1, 0, 0.2, 1.5, 0)),
+           ("bayes-0.5", (1, 1, 1, 0.5, 1.5, 0)),
+           ("no-skips", (1, 0, 1, 0.2, 1.5, 0)),
+           ("letters", (1, 1, 1, 0.2, 1.5, 1)),
+           ("letters-network-3", (1, 1, 1, 0.2, 3, 1)),
+           (STACKED, None))
+RIDGE = 1e-3       # penalty on the squared stacked votes: keeps them finite when members agree
 
 
-def choose(examples: list, rows_of, splits) -> tuple[str, dict]:
+def choose(examples: list, rows_of, splits) -> tuple[str, dict, tuple]:
     """(the name of the configuration right most often over the inner `splits`, {name:
-    inner accuracy}). `examples[k]` is training pair k as (command, candidates, {task:
-    weight}); `splits` are (training indices, held-out indices); `rows_of(k)` is pair k's
-    correct task text, the one a prediction is checked against."""
-    right = {name: 0 for name, _ in CONFIGS}
-    total = 0
+    inner accuracy}, its votes). `examples[k]` is training pair k as (command, candidates,
+    {task: weight}); `splits` are (training indices, held-out indices); `rows_of(k)` is
+    pair k's correct task text, the one a prediction is checked against. The stacked
+    votes are judged by cross-fitting: on each split's held-out commands, the votes
+    fitted to the other splits' held-out commands; chosen, they are fitted to all."""
+    held = []                 # per split: [(scores per member, knows per member, index of the truth)]
     for train_ix, test_ix in splits:
         members = [kind.train([examples[k] for k in train_ix], **options) for _, kind, options in POOL]
+        part = []
         for k in test_ix:
             command, candidates, _ = examples[k]
             knows = [getattr(m, "knows", lambda _: True)(candidates) for m in members]
-            scores = [m.log_posterior(command, candidates) for m in members]
+            scores = [np.asarray(m.log_posterior(command, candidates)) for m in members]
             truth = rows_of(k)
-            for name, weights in CONFIGS:
-                s = vote(weights, scores, knows)
-                right[name] += candidates[int(s.argmax())] == truth
-            total += 1
+            part.append((scores, knows, candidates.index(truth) if truth in candidates else -1))
+        held.append(part)
+    votes = {name: weights for name, weights in CONFIGS if weights is not None}
+    right = {name: 0 for name, _ in CONFIGS}
+    for j, part in enumerate(held):
+        fitted = {name: w for name, w in votes.items()}
+        if any(name == STACKED for name, _ in CONFIGS):
+            others = [r for i, p in enumerate(held) if i != j for r in p] or part
+            fitted[STACKED] = stack_votes(others)
+        for scores, knows, truth in part:
+            for name, weights in fitted.items():
+                right[name] += int(vote(weights, scores, knows).argmax()) == truth
+    total = sum(len(p) for p in held)
     accuracy = {name: right[name] / max(total, 1) for name, _ in CONFIGS}
     best = max(CONFIGS, key=lambda c: (accuracy[c[0]], -CONFIGS.index(c)))[0]
-    return best, accuracy
+    return best, accuracy, votes[best] if best in votes else stack_votes([r for p in held for r in p])
 
 
-def train(examples: list, config: str) -> Ensemble:
-    """The ensemble of `config` (a name in CONFIGS): the members it gives a vote, trained on `examples`."""
-    weights = dict(CONFIGS)[config]
+def stack_votes(records: list) -> tuple:
+    """Votes (one per POOL member, non-negative) that maximise the log-probability of the
+    right task under the vote of held-out scores `records` [(scores per member, knows per
+    member, index of the truth)], with a small ridge; a member that does not know a
+    record's tasks adds nothing to it. All zero (no member helps): equal votes."""
+    records = [r for r in records if r[2] >= 0]
+    m = len(POOL)
+    if not records:
+        return (1.0,) * m
+    by_size: dict = {}
+    for scores, knows, truth in records:
+        stack = np.array([s if k else np.zeros_like(s) for s, k in zip(scores, knows)])
+        by_size.setdefault(stack.shape[1], []).append((stack, truth))
+    blocks = [(np.array([s for s, _ in group]), np.array([t for _, t in group])) for group in by_size.values()]
+
+    def value_and_gradient(w):
+        loss, grad = 0.0, np.zeros(m)
+        for S, truth in blocks:                # S: records x members x candidates
+            z = np.einsum("m,rmc->rc", w, S)
+            z -= z.max(axis=1, keepdims=True)
+            p = np.exp(z)
+            p /= p.sum(axis=1, keepdims=True)
+            rows = np.arange(len(truth))
+            loss -= float(np.log(np.maximum(p[rows, truth], 1e-300)).sum())
+            grad -= np.einsum("rmc,rc->m", S, np.eye(S.shape[2])[truth] - p)
+        n = len(records)
+        return loss / n + RIDGE * float(w @ w), grad / n + 2 * RIDGE * w
+    fit = minimize(value_and_gradient, np.ones(m), jac=True, method="L-BFGS-B", bounds=[(0, None)] * m)
+    w = np.round(np.maximum(fit.x, 0.0), 4)
+    return tuple(float(x) for x in w) if w.sum() > 0 else (1.0,) * m
+
+
+def train(examples: list, weights) -> Ensemble:
+    """The ensemble voting with `weights` (one per POOL member, e.g. a configuration's or
+    the stacked ones): the members it gives a vote, trained on `examples`."""
     members = [(kind, options, w) for (_, kind, options), w in zip(POOL, weights) if w > 0]
     return Ensemble.train(examples, members)

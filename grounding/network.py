@@ -53,14 +53,14 @@ class Network(FeatureModel):
     """The trained network: feature indices, each start's weights, and the speller."""
 
     def __init__(self, command_index: dict, task_index: dict, starts: list[tuple], speller: Speller,
-                 pairs: int = 0, skips: int = 0, factored: bool = True):
-        super().__init__(command_index, task_index, speller, pairs, 0, skips, factored)
+                 pairs: int = 0, skips: int = 0, factored: bool = True, chars: int = 0):
+        super().__init__(command_index, task_index, speller, pairs, 0, skips, factored, chars)
         self.starts = starts          # [(W1 (dc x H), b1 (H), V (dt x H))]
 
     # ---- interpreting ------------------------------------------------------------------
     def log_posterior(self, command: str, tasks: list[str]) -> list[float]:
         """log P(task | command) for each candidate task text: the mean over the starts."""
-        idx = [self.command_index[f] for f in command_features(self.tokens(command), self.skips)
+        idx = [self.command_index[f] for f in command_features(self.tokens(command), self.skips, self.chars)
                if f in self.command_index]
         T = task_matrix(tasks, self.task_index, self.factored)
         total = np.zeros(len(tasks))
@@ -76,9 +76,9 @@ class Network(FeatureModel):
     # ---- training ----------------------------------------------------------------------
     @classmethod
     def train(cls, examples: list, skips: int = 0, factored: bool = True, hidden: int = HIDDEN,
-              starts: int = STARTS, epochs: int = EPOCHS, seed: int = SEED) -> Network:
+              starts: int = STARTS, epochs: int = EPOCHS, seed: int = SEED, chars: int = 0) -> Network:
         """`examples` as for LogLinear.train: (command, candidates, {task: weight})."""
-        speller, feats, command_index, task_index = index_features(examples, skips, factored)
+        speller, feats, command_index, task_index = index_features(examples, skips, factored, chars)
         active = [np.array([command_index[f] for f in fs if f in command_index], dtype=np.int64) for fs in feats]
         groups: dict = {}
         group_of = np.empty(len(examples), dtype=np.int64)
@@ -99,12 +99,12 @@ class Network(FeatureModel):
         trained = [_fit(active, group_of, matrices, targets, len(command_index), len(task_index),
                         hidden, epochs, rng) for _ in range(starts)]
         return cls(command_index, task_index, trained, speller, pairs=len(examples), skips=skips,
-                   factored=factored)
+                   factored=factored, chars=chars)
 
     # ---- files -------------------------------------------------------------------------
     def to_json(self) -> dict:
         return {"format": FORMAT, "pairs": self.pairs, "skips": self.skips, "factored": self.factored,
-                "hidden": int(self.starts[0][1].shape[0]),
+                **({"chars": self.chars} if self.chars else {}), "hidden": int(self.starts[0][1].shape[0]),
                 "command_features": sorted(self.command_index, key=self.command_index.get),
                 "task_features": sorted(self.task_index, key=self.task_index.get),
                 "starts": [{"W1": _encode(W1), "b1": _encode(b1), "V": _encode(V)} for W1, b1, V in self.starts],

@@ -137,12 +137,13 @@ def train(rows: list[dict], mode: str = "tasks"):
 
 def train_nested(rows: list[dict], mode: str = "tasks", seed: int = 0):
     """(the ensemble whose votes an inner cross-validation over `rows` alone chose, the
-    chosen configuration's name, {configuration: inner accuracy}): nested.py."""
+    chosen configuration's name, {configuration: inner accuracy}, its votes, one per
+    member of nested.POOL): nested.py."""
     from . import nested
     train_examples = examples(rows, mode)
     inner = folds(list(range(len(rows))), nested.INNER, seed)
-    name, accuracy = nested.choose(train_examples, lambda k: rows[k]["task"], inner)
-    return nested.train(train_examples, name), name, accuracy
+    name, accuracy, weights = nested.choose(train_examples, lambda k: rows[k]["task"], inner)
+    return nested.train(train_examples, weights), name, accuracy, list(weights)
 
 
 def predict(model, rows: list[dict]) -> list[str]:
@@ -189,8 +190,8 @@ def _fold(item) -> tuple[list[dict], float, dict | None]:
     if nested_seed is None:
         model = train(train_rows, mode)
     else:
-        model, name, inner = train_nested(train_rows, mode, nested_seed)
-        chosen = {"config": name, "inner_accuracy": inner}
+        model, name, inner, votes = train_nested(train_rows, mode, nested_seed)
+        chosen = {"config": name, "inner_accuracy": inner, "votes": votes}
     seconds = time.perf_counter() - t0
     return [{"id": r["id"], "level": r["level"], "command": r["command"], "task": r["task"],
              "predicted": got, "correct": got == r["task"]}

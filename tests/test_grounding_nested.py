@@ -54,15 +54,45 @@ def test_choose_takes_the_configuration_right_most_often_first_on_a_tie(monkeypa
     monkeypatch.setattr(nested, "CONFIGS", (("wrong-only", (0, 1)), ("right-only", (1, 0)),
                                             ("right-heavy", (2, 1)), ("right-too", (1, 0))))
     splits = [(list(range(0, 8)), list(range(8, 12))), (list(range(4, 12)), list(range(0, 4)))]
-    best, accuracy = nested.choose(examples, truth, splits)
+    best, accuracy, votes = nested.choose(examples, truth, splits)
     assert accuracy == {"wrong-only": 0.0, "right-only": 1.0, "right-heavy": 1.0, "right-too": 1.0}
-    assert best == "right-only"      # three tie at 100 %: the first listed
+    assert best == "right-only" and votes == (1, 0)     # three tie at 100 %: the first listed
+
+
+def test_stacked_votes_are_fitted_on_other_splits_and_chosen_when_right_more_often(monkeypatch):
+    tasks = ["a", "b"]
+    examples = [(f"c{k}", tasks, {tasks[k % 2]: 1.0}) for k in range(12)]
+    truth = lambda k: tasks[k % 2]                                              # noqa: E731
+    right = _Fixed.trainer(lambda command, t: int(command[1:]) % 2)
+    wrong = _Fixed.trainer(lambda command, t: 1 - int(command[1:]) % 2)
+    monkeypatch.setattr(nested, "POOL", (("right", right, {}), ("wrong", wrong, {})))
+    monkeypatch.setattr(nested, "CONFIGS", (("equal-ish", (1, 1.5)), (nested.STACKED, None)))
+    splits = [(list(range(0, 8)), list(range(8, 12))), (list(range(4, 12)), list(range(0, 4)))]
+    best, accuracy, votes = nested.choose(examples, truth, splits)
+    # the fixed votes side with the wrong member (1.5 > 1) on every command; the stacked
+    # votes, fitted on the other split's held-out commands, give it none
+    assert accuracy == {"equal-ish": 0.0, nested.STACKED: 1.0}
+    assert best == nested.STACKED and votes[1] == 0.0 and votes[0] > 0
+
+
+def test_stack_votes_weigh_the_informative_member_and_fall_back_to_equal_votes(monkeypatch):
+    # two candidates; member 0 puts log-probability 0 on the truth and -5 on the other,
+    # member 1 is uniform (log 1/2 each): only member 0 moves the likelihood, so the ridge
+    # drives member 1's vote to 0
+    monkeypatch.setattr(nested, "POOL", (("a", None, {}), ("b", None, {})))
+    uniform = [-0.6931, -0.6931]
+    records = [([[0.0, -5.0] if t == 0 else [-5.0, 0.0], uniform], [True, True], t) for t in (0, 1) * 5]
+    w = nested.stack_votes(records)
+    assert w[0] > 0.1 and w[1] == pytest.approx(0.0, abs=1e-3)
+    assert nested.stack_votes([]) == (1.0, 1.0)                                  # nothing to fit
+    assert nested.stack_votes([(r[0], r[1], -1) for r in records]) == (1.0, 1.0)  # no truth among the candidates
 
 
 def test_every_configuration_votes_with_pool_members_only():
     names = [name for name, _ in nested.CONFIGS]
     assert len(names) == len(set(names)) and len(names) <= 13       # about a dozen tries at most
-    assert all(len(w) == len(nested.POOL) and sum(w) > 0 and min(w) >= 0 for _, w in nested.CONFIGS)
+    assert all(w is None or (len(w) == len(nested.POOL) and sum(w) > 0 and min(w) >= 0) for _, w in nested.CONFIGS)
+    assert [name for name, w in nested.CONFIGS if w is None] == [nested.STACKED]
 
 
 @pytest.mark.slow

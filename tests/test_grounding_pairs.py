@@ -230,6 +230,39 @@ def test_whole_task_log_linear_model():
     assert LogLinear.from_json(old).factored is True
 
 
+def test_letter_ngrams_share_word_forms_and_round_trip(tmp_path):
+    """chars=N adds each word's letter n-grams (2..N letters, the word padded by spaces, as
+    scikit-learn's analyzer="char_wb"): a word form never seen in training still shares
+    features with the seen one, and the option is kept in the model file."""
+    from bcc.grounding import models
+    from bcc.grounding.ensemble import Ensemble
+    from bcc.grounding.loglinear import command_features, letter_ngrams
+    # " go " padded: 2-grams " g", "go", "o "; 3-grams " go", "go "; 4-gram " go " (by hand)
+    assert letter_ngrams(["go"], 4) == ["g: g", "g:go", "g:o ", "g: go", "g:go ", "g: go "]
+    assert letter_ngrams(["go", "go"], 2) == ["g: g", "g:go", "g:o "]          # each word once
+    assert not any(f.startswith("g:") for f in command_features(["go", "to", "red"]))
+    assert "g: gre" in command_features(["greenish"], chars=4) and "g: gre" in command_features(["green"], chars=4)
+    tasks = ["agentInRoom(agent, green)", "agentInRoom(agent, red)"]
+    ex = [("walk to the greenery room", tasks, {tasks[0]: 1.0}), ("walk to the greenhouse room", tasks, {tasks[0]: 1.0}),
+          ("walk to the reddish room", tasks, {tasks[1]: 1.0}), ("walk to the redder room", tasks, {tasks[1]: 1.0})] * 3
+    words_only = LogLinear.train(ex, factored=False)
+    letters = LogLinear.train(ex, factored=False, chars=4)
+    # "greens" was never said, and is not within the speller's reach of a training word:
+    # the word model sees only "walk to the ... room", said as often of either room (an even
+    # vote), the letters model also " gr", "gre", "reen", ...
+    words_lp, letters_lp = words_only.log_posterior("walk to the greens room", tasks), \
+        letters.log_posterior("walk to the greens room", tasks)
+    assert abs(words_lp[0] - words_lp[1]) < 0.2 and letters_lp[0] - letters_lp[1] > 1.0
+    again = LogLinear.from_json(json.loads(json.dumps(letters.to_json())))
+    assert again.chars == 4 and np.allclose(again.log_posterior("walk to the greens room", tasks), letters_lp, atol=1e-2)
+    assert "chars" not in words_only.to_json() and LogLinear.from_json(words_only.to_json()).chars == 0
+    # in an ensemble file (the nested choice may give the letters member a vote)
+    both = Ensemble([words_only, letters], [1.0, 1.0])
+    both.save(tmp_path / "e.json")
+    loaded = models.load(tmp_path / "e.json")
+    assert [m.chars for m in loaded.members] == [0, 4]
+
+
 def test_naive_bayes_counts_and_unseen_tasks(tmp_path):
     import math
     from bcc.grounding.bayes import ALPHA, PRIOR, NaiveBayes
