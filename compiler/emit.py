@@ -205,9 +205,14 @@ class Emitter(LayerExpanders):
             if isinstance(e, ir.When):
                 lines.append(f"{indent}if {self.ex(e.cond)}:")
                 lines += self.effects(e.then, indent + "    ", action) or [indent + "    pass"]
-                if e.orelse:
+                orelse = e.orelse
+                while len(orelse) == 1 and isinstance(orelse[0], ir.When):   # an elif chain, one block
+                    lines.append(f"{indent}elif {self.ex(orelse[0].cond)}:")
+                    lines += self.effects(orelse[0].then, indent + "    ", action) or [indent + "    pass"]
+                    orelse = orelse[0].orelse
+                if orelse:
                     lines.append(f"{indent}else:")
-                    lines += self.effects(e.orelse, indent + "    ", action)
+                    lines += self.effects(orelse, indent + "    ", action)
             elif isinstance(e, ir.SetVar):
                 slot = self.L.by_var[e.var]
                 lines += self.store(f"{slot.index}", e.value, slot.lo, slot.hi, e.var.label, indent)

@@ -10,7 +10,7 @@ from __future__ import annotations
 from . import ast, ir
 from .definitions import Expr
 from .ground_refs import Ctx, KeyRef, ObjRef
-from .limits import MAX_GENERATED_NESTING, MAX_GROUND_EFFECTS
+from .limits import MAX_EFFECT_LEVELS, MAX_GENERATED_NESTING, MAX_GROUND_EFFECTS
 from .source import suggest
 
 
@@ -146,13 +146,22 @@ def when(cond, then: tuple, orelse: tuple) -> tuple:
 
 def check_nesting(name: str, pre: list, effects: tuple, where: Expr) -> None:
     """Each precondition and each conditional effect is one more indented block of the
-    generated Python, which allows at most 100: refuse an action that would need more."""
-    depth, todo = 0, [(e, 1) for e in effects]
+    generated Python, which allows at most 100: refuse an action that would need more. An
+    elif chain (a `first` over objects is one branch per object) is one block of `if ...
+    elif ...`, but Python's compiler and the analyses still go one level deeper per branch:
+    those levels are bounded apart, by MAX_EFFECT_LEVELS."""
+    depth = levels = 0
+    todo = [(e, 1, 1) for e in effects]      # (effect, its indented block, its level counting branches)
     while todo:
-        e, level = todo.pop()
+        e, block, level = todo.pop()
         if isinstance(e, ir.When):
-            depth = max(depth, level)
-            todo += [(x, level + 1) for x in e.then + e.orelse]
+            depth, levels = max(depth, block), max(levels, level)
+            todo += [(x, block + 1, level + 1) for x in e.then]
+            chained = len(e.orelse) == 1 and isinstance(e.orelse[0], ir.When)
+            todo += [(x, block if chained else block + 1, level + 1) for x in e.orelse]
     if len(pre) + depth > MAX_GENERATED_NESTING:
         raise where.error(f"action {name}: {len(pre)} preconditions and effects nested {depth} deep "
-                          f"(each elif and `first` item is one level) exceed {MAX_GENERATED_NESTING} levels")
+                          f"exceed {MAX_GENERATED_NESTING} levels")
+    if levels > MAX_EFFECT_LEVELS:
+        raise where.error(f"action {name}: its conditional effects are nested {levels} deep (each elif and "
+                          f"each object of a `first` is one level) and exceed {MAX_EFFECT_LEVELS} levels")

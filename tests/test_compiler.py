@@ -258,3 +258,68 @@ def test_nested_firsts_that_multiply_are_refused_quickly(tmp_path):
     with pytest.raises(BccError, match="more than 100,000 ground effects") as caught:
         compile_dungeon(path)
     assert time.process_time() - start < 30 and caught.value.path.endswith("dom.yaml") and caught.value.line
+
+
+def test_a_first_over_150_objects_compiles_flat(tmp_path):
+    """`first c in coin where ...` grounds to one branch per coin: an elif chain, which the
+    generated code writes as one `if ... elif ...` block. With a block per branch, a world
+    of more than about 85 coins (or items lying on the ground) was refused; 150 compile,
+    and taking picks the coin under the token, not another."""
+    n = 150
+    (tmp_path / "coins.yaml").write_text("""\
+domain: coins
+types:
+  tile: {values: [empty, floor]}
+classes:
+  token:
+    position: [x, y, z]
+    attributes:
+      x: {type: int, range: [0, width - 1]}
+      y: {type: int, range: [0, 0]}
+      z: {type: int, range: [0, 0]}
+      held: {type: int, range: [0, 3]}
+  coin:
+    attributes:
+      x: int
+      present: {type: bool, default: true}
+  cell:
+    key: [x, y, z]
+    attributes:
+      x: {type: int, range: [0, width - 1]}
+      y: {type: int, range: [0, height - 1]}
+      z: {type: int, range: [0, depth - 1]}
+      kind: {type: tile, default: empty}
+dungeon:
+  grid: cell
+  agent: token
+  lists:
+    coins: {class: coin, fields: {x: x}}
+actions:
+  step:
+    params: {t: token}
+    pre: t.x + 1 < width
+    effect: t.x = t.x + 1
+  take:
+    params: {t: token}
+    pre: t.held < 3
+    effect: first c in coin where c.present and c.x == t.x { c.present = false; t.held = t.held + 1 }
+""")
+    coins = "\n".join(f"  - {{name: c{i}, x: {i}}}" for i in range(n))
+    (tmp_path / "d.yaml").write_text(f"""\
+domain: coins.yaml
+height: 1
+legend: {{".": [floor]}}
+map: |
+  {"." * n}
+agent: {{start: [0, 0, 0]}}
+coins:
+{coins}
+goal: agent.held == 2
+""")
+    m = compile_dungeon(tmp_path / "d.yaml")
+    assert "elif" in m.source
+    from bcc.solvers import Budget, get_solver
+    result = get_solver("bfs")(m, Budget(time_limit=60))
+    # one coin per cell: take, step, take (the coin taken is gone, so a second take in
+    # place does nothing; BFS finds the 3 steps)
+    assert result.cost == 3 and result.plan == ["take", "step", "take"]
