@@ -296,14 +296,14 @@ class Grounder(EffectGrounder):
     def expand_call(self, node, ctx, fdef, bound: dict):
         """The function's body with its parameters bound. A body depends on nothing but its
         arguments, so a call repeated with the same grounded arguments (`roomFor(t)` once per
-        item a move may pick up) reuses the first grounding: the same IR, unless the first
+        item a move may pick up; arguments that are names, constants or state variables)
+        reuses the first grounding: the same IR, unless the first
         took fresh names (those are handed out again) or the repeat runs deeper than the
         nesting bound allows (then it is grounded again, to raise the error)."""
-        key = (fdef.name, tuple(bound.items()))
-        try:
+        key = hit = None
+        if all(type(v) in _SHALLOW for v in bound.values()):   # deep arguments cost more to hash than they save
+            key = (fdef.name, tuple(bound.items()))
             hit = self.calls.get(key)
-        except TypeError:        # an argument that cannot be hashed: ground it each time
-            key, hit = None, None
         if hit is not None and self.depth + hit[1] <= MAX_GROUND_DEPTH:
             self.peak = max(self.peak, self.depth + hit[1])
             return hit[0]
@@ -491,6 +491,9 @@ class Grounder(EffectGrounder):
                 self.bool_expr(src.node, Ctx(src, env))
             self.effects(schema.effects.node, Ctx(schema.effects, env))
 
+
+
+_SHALLOW = (ObjRef, ir.Const, ir.Var, ir.Local)   # arguments a call's grounding is reused for
 
 
 def _cmp(op, a, b) -> bool:

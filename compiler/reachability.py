@@ -78,13 +78,18 @@ class Analysis:
                 out.add(default)
             if not inx or not inz:
                 return frozenset(out)
+            lo, hi = min(inx), max(inx)
+            run = hi - lo + 1 == len(inx)      # x a run of cells (a range of positions): read a row's slice
             for y in ys:
                 if not 0 <= y < H:
                     continue
                 out |= written.get(y, frozenset())
                 for z in inz:
                     row = y * area + z * W
-                    out.update([grid[row + x] for x in inx])
+                    if run:
+                        out.update(grid[row + lo:row + hi + 1])
+                    else:
+                        out.update([grid[row + x] for x in inx])
             return frozenset(out)
         return box
 
