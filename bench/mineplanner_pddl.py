@@ -434,7 +434,7 @@ def run_task(task: str, level: str, data: Path, work: Path, limit: float, planne
 
 
 def cell(r: dict | None) -> str:
-    if r is None:
+    if not r:
         return "-"
     if r.get("solved"):
         return f"{r['length']:>4} {r['cpu_seconds']:>6.1f}s {r['peak_mb']:>5.0f}MB"
