@@ -14,26 +14,22 @@ The result carries `lower_bound` (goal_cells.lower_bound at the start: admissibl
 """
 from __future__ import annotations
 
-import dataclasses
 import heapq
 import itertools
+import random
 
 from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound, orders, ready, support_levels
 from ..heuristics.supplies import supplies, wanted
-from .shorten import eliminate
+from .access import Access
 from .scaffold import CANDIDATES, make_solid, stand_near, write_cell
 from ..errors import ModelError
-from .base import Budget, Meter, Result, budget_result
+from .base import Budget, Meter, Result
 from .options import Option, declare
 
 NAME = "build"
 LIFTS = 2          # actions that write and move tried at the end of a walk (a climb, twice)
 GATHER_LIMIT = 100_000   # states a walk to a supply may visit (positions, in effect)
-SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_UP_TO = 40       # plans this short are handed to A* for a shorter one
-IMPROVE_STATES = 100_000
-IMPROVE_FLOOR = 1.0      # seconds the improving A* may always take (more if finding the plan took more)
-IMPROVE_MB = 400         # the process's memory at which A*'s try stops
 RETRY = 8          # atoms achieved before a set-aside atom is tried again
 
 
@@ -46,7 +42,7 @@ def _distance(a, b) -> int:
 
 
 class _Builder:
-    def __init__(self, model, cells, meter, budget, local_limit):
+    def __init__(self, model, cells, meter, budget, local_limit, seed=0):
         self.model, self.cells, self.meter, self.budget = model, cells, meter, budget
         self.read = CellReader(model)
         self.succ = model.search_successors()
@@ -74,13 +70,19 @@ class _Builder:
         # walks may also clear a cell on the way (take a scaffold down), never fill one
         clear = model.grid.default
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
+        self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
+        if self.rng:
+            self.rng.shuffle(self.walkers)
         # actions that clear a cell without moving: a gathering walk may use them when blocked in
         self.clearers = sorted({a.action for a in cells.achievers.get(clear, ()) if not a.moves})
         self.clear_set = set(self.clearers)
         self.supplies = supplies(model, cells)
         self.wanted = wanted(model)    # variables the goal wants at or above a value
+        self.strict = True             # atoms that wall others in wait (solvers/access.py)
+        self.todo = {}                 # the pending atoms (position -> value), while running
         self.keep = set()              # footing built for the atom in hand (solvers/scaffold.py)
         self.footing = footing(model)  # (offsets the agent stands on, offsets its body takes)
+        self.access = Access(cells, self.footing[1], model.grid.default) if self.footing[1] else None
         self.exhausted = {}            # variable -> plan length when no way to raise it was found
         self.rests_on = {}             # value -> offsets every achiever of it needs to hold something
         for v, lst in cells.achievers.items():
@@ -194,11 +196,22 @@ class _Builder:
         (pos, value), read = atom, self.read
         default, protected = self.model.grid.default, self.protected
         places = [p for p in self.cells.standing(atom) if protected.get(p, default) == default]
-        return self.search(state, lambda s: read(s, *pos) == value, places)
+        return self.search(state, lambda s: read(s, *pos) == value, places, self._floor(self.todo))
 
-    def search(self, state, done, places):
+    def _floor(self, todo) -> dict:
+        """{variable: amount} the pending atoms `todo` (and the goal) still take: what a
+        search on the way to something else must not spend (on scaffolding, say)."""
+        return self.supplies.demand(todo.values(), self.wanted) if self.supplies else {}
+
+    def _spends(self, s, n, floor) -> bool:
+        """The step s -> n takes a variable below what `floor` keeps for the pending atoms."""
+        value = self.supplies.value
+        return any(value(n, var) < value(s, var) and value(n, var) < keep for var, keep in floor.items())
+
+    def search(self, state, done, places, floor=None):
         """Greedy from `state` to one where `done(s)`, h = 1 + the distance to the nearest
-        of `places`, changing no protected atom: (path, "ok" | "failed" | budget name)."""
+        of `places`, changing no protected atom and spending nothing `floor` keeps (except
+        on the last step): (path, "ok" | "failed" | budget name)."""
         agent = self.model.agent_position
 
         def h(s):
@@ -233,9 +246,16 @@ class _Builder:
                 self.generated += 1
                 if n in parents or self.model.is_failure(n) or self.breaks_protected(s, a, n):
                     continue
+                if floor and self._spends(s, n, floor) and not done(n):
+                    continue
                 parents[n] = (s, a)
                 heapq.heappush(frontier, (h(n), g + 1, next(tie), n))
         return None, "failed"
+
+    def _walls_in(self, p) -> bool:
+        """Writing the atom at p now takes the last standing place of another pending atom
+        (solvers/access.py); not asked once every atom left does so (`strict` off)."""
+        return self.strict and self.access is not None and self.access.kills(p, self.todo, self.protected)
 
     def _blocked(self, state, var) -> bool:
         """Too little of `var` is left to write even one atom that takes it."""
@@ -316,7 +336,10 @@ class _Builder:
             walk = self.walk(pre[-1][1], finish, GATHER_LIMIT)
             if walk is not None:
                 return pre + walk, "ok"
-        return self.search(state, lambda s: gained(s), places)
+            walk, why = self.search(pre[-1][1], gained, places, self._floor(todo))   # the last steps in
+            if walk is not None:
+                return pre + walk, why
+        return self.search(state, gained, places, self._floor(todo))
 
     def prepare(self, state, pos, todo):
         """Footing first, then the atom at `pos`: what it rests on (cells outside the goal,
@@ -358,6 +381,7 @@ class _Builder:
         """Protect the atoms that now hold; release the atoms that waited for them."""
         for p in [p for p, v in todo.items() if self.read(state, *p) == v]:
             self.protected[p] = todo.pop(p)
+            self.strict = True
             for q in released.get(p, ()):
                 blockers[q] -= 1
 
@@ -379,7 +403,7 @@ class _Builder:
         for q, ps in waits.items():
             for p in ps:
                 released.setdefault(p, []).append(q)
-        todo = {}
+        todo = self.todo = {}
         for pos, v in cells.atoms:
             if read(start, *pos) == v:
                 self.protected[pos] = v
@@ -402,11 +426,13 @@ class _Builder:
 
             def eligible(p):
                 return level.get(p, late) <= lowest and p not in set_aside and blockers.get(p, 0) <= 0 \
-                    and ready(cells, read, state, (p, todo[p]))
+                    and ready(cells, read, state, (p, todo[p])) and not self._walls_in(p)
             short = self.supplies.short(state, todo.values(), wanted) if self.supplies else {}
             short = {v: k for v, k in short.items()
                      if self.exhausted.get(v) is None or (self.exhausted[v] != len(plan) and self._blocked(state, v))}
             if short:   # gather what writing the pending atoms takes, nearest first
+                if not todo:   # no atom left to stand for: earlier footing may be taken
+                    self.keep.clear()
                 path, why = self.gather(state, short, todo)
                 if why not in ("ok", "failed"):
                     return plan, state, why
@@ -432,7 +458,8 @@ class _Builder:
             if not candidates and lowest >= late:   # nothing ready: what they rest on is built first
                 candidates = sorted(
                     (min((_distance(here, p) for p in cells.standing((pos, v))), default=0), pos)
-                    for pos, v in todo.items() if pos not in set_aside and blockers.get(pos, 0) <= 0)
+                    for pos, v in todo.items() if pos not in set_aside and blockers.get(pos, 0) <= 0
+                    and not self._walls_in(pos))
             progressed = False
             for k, (_, pos) in enumerate(candidates):
                 if self.supplies and self._starved(state, todo[pos]):
@@ -454,6 +481,9 @@ class _Builder:
                 progressed = True
                 break
             if not progressed and lowest >= late:
+                if self.strict:    # every atom left walls another in: one of them must be written
+                    self.strict = False
+                    continue
                 if set_aside and retried != len(plan):   # the state moved on since: try them again
                     set_aside.clear()
                     retried = len(plan)
@@ -471,44 +501,12 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
           **options) -> Result:
     """Builds a goal of many cell atoms one atom at a time (satisficing), reporting a lower bound."""
     from . import get_solver
+    from .build_finish import finish, serialise
     meter = Meter(budget, progress)
     cells = goal_cells(model) or (goal_cells(model, allow_empty=True) if wanted(model) else None)
     if cells is None:   # no cell atoms and no amount to gather: nothing to serialise
         result = get_solver("gbfs")(model, budget, progress)
         result.solver = NAME
         return result
-    builder = _Builder(model, cells, meter, budget, local_limit)
-    bound = lower_bound(cells, model, model.initial, builder.read)
-    plan, state, why = builder.run(model.initial)
-    stats = dict(expanded=builder.expanded, generated=builder.generated, stored=builder.expanded)
-    if why is not None:
-        return budget_result(NAME, why, meter, lower_bound=bound, **stats)
-    tail, tail_result = [], None
-    if not model.is_goal(state):   # the fallback: gbfs from here, with what is left of the budget
-        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed())
-        rest = get_solver("gbfs")(dataclasses.replace(model, initial=state),
-                                  Budget(budget.max_states, left, budget.max_memory_mb), progress)
-        stats = {k: stats[k] + getattr(rest, k) for k in stats}
-        if not rest.solved:
-            rest.solver, rest.lower_bound = NAME, bound
-            rest.expanded, rest.generated, rest.stored = stats["expanded"], stats["generated"], stats["stored"]
-            return meter.finish(rest)
-        tail = [model.action_index(n) for n in rest.plan]
-    actions = [*plan, *tail]
-    if len(actions) <= SHORTEN_UP_TO:   # detours out: O(n^2) steps of the simulator
-        actions = eliminate(model, actions, lambda: budget.time_limit is not None and meter.elapsed() > budget.time_limit)
-    if 0 < len(actions) <= improve:   # short: an optimal search may finish and find a shorter plan
-        left = max(IMPROVE_FLOOR, meter.elapsed())   # at most as long again as the plan took (anytime doubling)
-        if budget.time_limit is not None:
-            left = min(left, max(0.0, budget.time_limit - meter.elapsed()) / 4)
-        mem = min(IMPROVE_MB, budget.max_memory_mb / 2) if budget.max_memory_mb else IMPROVE_MB
-        better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem),
-                                        heuristic="blind")
-        for k in stats:
-            stats[k] += getattr(better, k) or 0
-        if better.solved and better.cost < sum(model.action_costs[a] for a in actions):
-            actions = [model.action_index(n) for n in better.plan]
-    return meter.finish(Result(solver=NAME, solved=True, status="solved",
-                               plan=[model.action_names[a] for a in actions],
-                               cost=sum(model.action_costs[a] for a in actions),
-                               lower_bound=bound, **stats))
+    run = serialise(model, lambda seed: _Builder(model, cells, meter, budget, local_limit, seed), meter)
+    return finish(model, budget, meter, run, improve, progress)

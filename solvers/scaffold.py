@@ -32,7 +32,7 @@ def spare_value(b, state, todo):
     """A value the agent can write without taking what the pending atoms need: the one with
     the most left over (a value that takes nothing counts as plenty), or None."""
     sup, best, most = b.supplies, None, 0
-    demand = sup.demand(todo.values()) if sup else {}
+    demand = sup.demand(todo.values(), b.wanted) if sup else {}
     for v, achievers in b.cells.achievers.items():
         if v is None or v == b.model.grid.default or not any(not a.moves for a in achievers):
             continue
@@ -132,31 +132,103 @@ def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
     return path + walk
 
 
+def make_free(b, state, cell, todo, depth=MAX_DEPTH):
+    """A path [(action, state)] after which `cell` holds nothing: an achiever of the
+    default value (one that does not move the agent) applied from a standing place beside
+    it, that place's footing built and its body cleared first when no walk reaches one
+    (recursively, as `make_solid`); None if not found. A protected cell, a footing in use
+    or the cell of a pending atom that already holds is never cleared."""
+    read, default = b.read, b.model.grid.default
+    if read(state, *cell) == default:
+        return []
+    if depth < 0 or not _inside(b.model.grid, cell) or cell in b.protected or cell in b.keep \
+            or cell in b._reserved(todo):
+        return None
+    clearers = [a for a in b.cells.achievers.get(default, ()) if not a.moves]
+    if not clearers:
+        return None
+    places = {_add(cell, (-a.write[0], -a.write[1], -a.write[2])) for a in clearers}
+
+    def clear(s):
+        return write_cell(b, s, cell, default)
+    walk = b.walk(state, clear, b.local_limit)
+    if walk is None and depth > 0:
+        pre = stand_near(b, state, places, todo, depth - 1)
+        if pre:
+            more = b.walk(pre[-1][1], clear, b.local_limit)
+            walk = pre + more if more is not None else None
+    return walk
+
+
+def climb(b, state, st, todo):
+    """A path [(action, state)] to the standing place `st`, whose footing holds and whose
+    body is free but which no walk reaches (a ledge one level up or more): the build
+    solver's greedy search (any action: blocks put down to step on), spending nothing the
+    pending atoms take; None if it fails within its limit."""
+    agent = b.model.agent_position
+    path, why = b.search(state, lambda s: agent(s) == st, [st], b._floor(todo))
+    return path if why == "ok" else None
+
+
+def _changes(b, state, st):
+    """What standing at `st` needs done first: (cells to fill, cells to clear), or None
+    when a body cell must keep what it holds (protected, or a footing in use)."""
+    solid, free = b.footing
+    read, default = b.read, b.model.grid.default
+    fill = [_add(st, o) for o in solid if read(state, *_add(st, o)) == default]
+    clear = []
+    for o in free:
+        cell = _add(st, o)
+        if b.protected.get(cell, default) != default:
+            return None
+        if read(state, *cell) != default:
+            if cell in b.keep or cell in b.protected:
+                return None
+            clear.append(cell)
+    return fill, clear
+
+
 def stand_near(b, state, places, todo, depth=MAX_DEPTH):
-    """A path [(action, state)] that builds the footing of one of `places` (nearest first;
-    a place whose body cells are free), so a walk can reach it; None if none is found.
-    An empty path when some place needs no footing."""
+    """A path [(action, state)] that builds the footing of one of `places` and clears its
+    body cells (the fewest cells to clear first, then the nearest; at most CANDIDATES
+    places tried), so a walk can reach it; None if none is found (a place that needs
+    nothing done is no answer: a walk would have found it)."""
     solid, free = b.footing
     if not solid:
         return None
-    read, default, grid = b.read, b.model.grid.default, b.model.grid
+    grid = b.model.grid
     here = b.model.agent_position(state)
-    tried = 0
-    for st in sorted(set(places), key=lambda p: _distance(here, p)):
-        if tried >= CANDIDATES:
-            break
-        if not _inside(grid, st) or any(read(state, *_add(st, o)) != default or b.protected.get(_add(st, o), default)
-                                        != default for o in free):
+    ranked = []
+    for st in set(places):
+        if not _inside(grid, st):
             continue
-        tried += 1
+        changes = _changes(b, state, st)
+        if changes is not None:
+            ranked.append((len(changes[1]), _distance(here, st), st, changes))
+    jitter = b.rng.random if b.rng else (lambda: 0)     # another try breaks ties another way
+    ranked.sort(key=lambda r: (r[0], r[1], jitter()))   # else ties in the order of `places`
+    for _, _, st, (fill, clear) in ranked[:CANDIDATES]:
+        if not fill and not clear:   # ready but out of a walk's reach (up a level): a short search
+            path = climb(b, state, st, todo)
+            if path:
+                return path
+            continue
         path, s = [], state
-        for o in solid:
-            sub = make_solid(b, s, _add(st, o), todo, depth)
+        for cell in fill:
+            sub = make_solid(b, s, cell, todo, depth)
             if sub is None:
                 break
             path += sub
             s = path[-1][1] if path else s
         else:
-            if path:
-                return path
+            for cell in clear:
+                sub = make_free(b, s, cell, todo, depth)
+                if sub is None:
+                    break
+                path += sub
+                s = path[-1][1] if path else s
+            else:
+                if path:
+                    return path
     return None
+

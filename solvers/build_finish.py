@@ -1,0 +1,140 @@
+"""The build solver's run as a whole: its tries, what happens when serialising stops
+short of the goal, and the shorter plan made of what it found.
+
+- **Tries.** The builder (solvers/build.py) is deterministic, and which of two equally
+  near places or atoms it takes first can decide whether it strands itself (the last
+  cell walled in by scaffolding). When a try stops short of the goal, another one starts
+  from the start with other ties (its walks' action order shuffled by a seed), while the
+  budget lasts, at most TRIES in all; the try that reached the goal, or else the one that
+  left the fewest atoms, is kept.
+- **The fallback rule** (`search_may_help`, the one place of it). gbfs gets what is left
+  of the budget from the state reached only where a search may help: the goal has a
+  conjunct other than cell atoms and amounts to gather (which the builder does not
+  pursue), an atom waits for a value that no gathering walk raised (it must be made from
+  others), or at most FALLBACK_UP_TO atoms are left and no amount is short. Otherwise the
+  run ends with no plan (`no_solution`; its message says the builder is not complete):
+  on a world of any size gbfs's relaxed view alone takes longer than the builder did.
+- **Shorter plans.** Greedy action elimination (solvers/shorten.py) on plans of at most
+  SHORTEN_UP_TO actions; then blind A* on plans of at most `improve` actions.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+from .base import Budget, Result, budget_result
+from .shorten import eliminate
+
+NAME = "build"
+TRIES = 4               # runs of the builder, each with other ties, while the goal is not reached
+FALLBACK_UP_TO = 3      # atoms left (and no amount short) for which the gbfs fallback still runs
+SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
+IMPROVE_STATES = 100_000
+IMPROVE_FLOOR = 1.0     # seconds the improving A* may always take (more if finding the plan took more)
+IMPROVE_MB = 400        # the process's memory at which A*'s try stops
+
+
+def _amount(node) -> bool:
+    """A goal conjunct that bounds one variable by constants (`5 <= v`, `5 <= v <= 63`)."""
+    from ..compiler import ir
+    return isinstance(node, ir.Cmp) and sum(isinstance(o, ir.Var) for o in node.operands) == 1 \
+        and all(isinstance(o, (ir.Var, ir.Const)) for o in node.operands) \
+        and all(op in ("<=", "<", ">=", ">") for op in node.ops)
+
+
+def search_may_help(builder, state) -> bool:
+    """Whether the gbfs fallback runs from `state`, where serialising stopped (the rule
+    in the module docstring)."""
+    if any(not _amount(g) for g in builder.cells.rest):
+        return True
+    sup = builder.supplies
+    short = sup.short(state, (), builder.wanted) if sup else {}
+    if len(builder.todo) <= FALLBACK_UP_TO and not short:
+        return True
+    return bool(sup) and any(builder._starved(state, v) for v in builder.todo.values())
+
+
+def gave_up(builder, state) -> str:
+    sup = builder.supplies
+    short = sup.short(state, (), builder.wanted) if sup else {}
+    return (f"the build solver stopped with {len(builder.todo)} goal cell atom(s) unwritten and {len(short)} "
+            "amount(s) short: it is not complete; --solver gbfs searches the whole space")
+
+
+@dataclasses.dataclass
+class Run:
+    builder: object
+    plan: list
+    state: bytes
+    why: str | None          # a budget's name, or None
+    stats: dict
+    bound: int
+
+
+def serialise(model, make_builder, meter) -> Run:
+    """The builder's tries (module docstring): the first that reaches the goal, else the
+    one that left the fewest atoms. Its stats count every try."""
+    from ..heuristics.goal_cells import lower_bound
+    best, stats = None, dict(expanded=0, generated=0, stored=0)
+    for seed in range(TRIES):
+        builder = make_builder(seed)
+        if best is None:
+            bound = lower_bound(builder.cells, model, model.initial, builder.read)
+        plan, state, why = builder.run(model.initial)
+        stats = dict(expanded=stats["expanded"] + builder.expanded, generated=stats["generated"] + builder.generated,
+                     stored=stats["stored"] + builder.expanded)
+        run = Run(builder, plan, state, why, stats, bound)
+        if best is None or (why is None and len(builder.todo) < len(best.builder.todo)):
+            best = run
+        if why is not None or model.is_goal(state):
+            return run if why is None else dataclasses.replace(best, why=why)
+        if meter.check(stats["expanded"], stats["generated"], stats["expanded"]):
+            break
+    return best
+
+
+def finish(model, budget: Budget, meter, run: Run, improve: int, progress) -> Result:
+    """The result of the tries: the fallback where it may help, then a shorter plan."""
+    from . import get_solver
+    stats, bound, state = dict(run.stats), run.bound, run.state
+    if run.why is not None:
+        return budget_result(NAME, run.why, meter, lower_bound=bound, **stats)
+    tail = []
+    if not model.is_goal(state) and not search_may_help(run.builder, state):
+        return meter.finish(Result(solver=NAME, solved=False, status="no_solution", lower_bound=bound, **stats,
+                                   message=gave_up(run.builder, state)))
+    if not model.is_goal(state):   # the fallback: gbfs from here, with what is left of the budget
+        left = None if budget.time_limit is None else max(0.0, budget.time_limit - meter.elapsed())
+        rest = get_solver("gbfs")(dataclasses.replace(model, initial=state),
+                                  Budget(budget.max_states, left, budget.max_memory_mb), progress)
+        stats = {k: stats[k] + getattr(rest, k) for k in stats}
+        if not rest.solved:
+            rest.solver, rest.lower_bound = NAME, bound
+            rest.expanded, rest.generated, rest.stored = stats["expanded"], stats["generated"], stats["stored"]
+            return meter.finish(rest)
+        tail = [model.action_index(n) for n in rest.plan]
+    actions = [*run.plan, *tail]
+    if len(actions) <= SHORTEN_UP_TO:   # detours out: O(n^2) steps of the simulator
+        actions = eliminate(model, actions, lambda: budget.time_limit is not None and meter.elapsed() > budget.time_limit)
+    if 0 < len(actions) <= improve:   # short: an optimal search may finish and find a shorter plan
+        actions = _improve(model, budget, meter, actions, stats)
+    return meter.finish(Result(solver=NAME, solved=True, status="solved",
+                               plan=[model.action_names[a] for a in actions],
+                               cost=sum(model.action_costs[a] for a in actions),
+                               lower_bound=bound, **stats))
+
+
+def _improve(model, budget, meter, actions, stats) -> list:
+    """Blind A* for a plan shorter than `actions` (as long again as the plan took, at least
+    IMPROVE_FLOOR s, at most a quarter of the time left): its plan when shorter."""
+    from . import get_solver
+    left = max(IMPROVE_FLOOR, meter.elapsed())   # anytime doubling
+    if budget.time_limit is not None:
+        left = min(left, max(0.0, budget.time_limit - meter.elapsed()) / 4)
+    mem = min(IMPROVE_MB, budget.max_memory_mb / 2) if budget.max_memory_mb else IMPROVE_MB
+    better = get_solver("astar")(model, Budget(min(budget.max_states or IMPROVE_STATES, IMPROVE_STATES), left, mem),
+                                 heuristic="blind")
+    for k in stats:
+        stats[k] += getattr(better, k) or 0
+    if better.solved and better.cost < sum(model.action_costs[a] for a in actions):
+        return [model.action_index(n) for n in better.plan]
+    return actions
