@@ -10,6 +10,8 @@ prediction is right when it is the same goal, conjunctions compared as sets.
 """
 from __future__ import annotations
 
+import contextlib
+
 import json
 import random
 import time
@@ -219,14 +221,15 @@ def evaluate(splits: list[tuple[list, list]], mode: str = "tasks", progress=None
         limits = Limits(memory_mb=None if memory_mb is None else memory_mb / workers)
         outcomes = map_local(_fold, [(*split, mode, nested_seed) for split in splits], workers, lambda item: limits,
                              _prepare_fold)
-        for finished, outcome in enumerate(outcomes, 1):
-            if outcome.limit:
-                raise BudgetExceeded(outcome.limit)
-            if outcome.error:
-                raise BccError(outcome.error)
-            done[outcome.index] = outcome.value
-            if progress:
-                progress(finished, len(splits))
+        with contextlib.closing(outcomes):    # a raise here (a spent budget) stops the children now
+            for finished, outcome in enumerate(outcomes, 1):
+                if outcome.limit:
+                    raise BudgetExceeded(outcome.limit)
+                if outcome.error:
+                    raise BccError(outcome.error)
+                done[outcome.index] = outcome.value
+                if progress:
+                    progress(finished, len(splits))
     pairs = [p for fold_pairs, _, _ in done for p in fold_pairs]
     seconds = sum(s for _, s, _ in done)
     by_level = {}

@@ -7,6 +7,9 @@ worker dies. Outcomes come back in completion order.
 """
 from __future__ import annotations
 
+import contextlib
+import signal
+import threading
 import time
 from multiprocessing.connection import wait
 from typing import Callable, Iterable, Iterator
@@ -44,6 +47,22 @@ def map_local(function, items: Iterable, workers: int, limits_of: Callable[[obje
                 if child.deadline is not None and now >= child.deadline:
                     del running[index]
                     yield child.expire()
-    finally:  # Ctrl-C, or the consumer stopped early: no child outlives the sweep
-        for child in running.values():
-            child.kill()
+    finally:  # Ctrl-C, a spent budget, or the consumer stopped early: no child outlives the sweep
+        with _timer_held():
+            for child in running.values():
+                child.kill()
+
+
+@contextlib.contextmanager
+def _timer_held():
+    """Hold back the budget's timer (solvers/limits.py: it fires again every 0.25 s once the
+    time is spent) while children are killed and reaped: a raise in the middle of the sweep
+    would leave the rest running. A signal that came meanwhile is delivered after."""
+    held = threading.current_thread() is threading.main_thread()
+    if held:
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
+    try:
+        yield
+    finally:
+        if held:
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})

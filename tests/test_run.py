@@ -67,3 +67,24 @@ def test_the_meter_stops_with_the_solvers_result():
     assert stopped.solver == "mine" and stopped.status == "budget" and stopped.budget == "max_states"
     assert (stopped.expanded, stopped.generated, stopped.stored, stopped.heuristic) == (2, 9, 11, "h")
     assert "--max-states" in stopped.message
+
+
+def test_a_spent_budget_stops_every_child_even_when_reaping_is_slow(monkeypatch):
+    """The budget's timer fires again every 0.25 s once the time is spent; the pool's sweep
+    holds it back, so a raise cannot land between two children's kills and leave one
+    running (seen under load: `bcc corpus evaluate --workers 2 --time-limit 1` left one)."""
+    import multiprocessing
+
+    from bcc.run import children, pool
+    from bcc.solvers.limits import BudgetExceeded, hard_limits
+    kill = children.Child.kill
+
+    def slow_kill(self):
+        time.sleep(0.4)         # longer than the timer's repeat: a raise would land here
+        kill(self)
+    monkeypatch.setattr(children.Child, "kill", slow_kill)
+    with pytest.raises(BudgetExceeded):
+        with hard_limits(Budget(time_limit=0.3), grace=0.0):
+            for _ in pool.map_local(time.sleep, [30, 30, 30], 2, lambda item: children.Limits()):
+                pass
+    assert not multiprocessing.active_children()
