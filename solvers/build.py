@@ -42,7 +42,7 @@ def _distance(a, b) -> int:
 
 
 class _Builder:
-    def __init__(self, model, cells, meter, budget, local_limit, seed=0):
+    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True):
         self.model, self.cells, self.meter, self.budget = model, cells, meter, budget
         self.read = CellReader(model)
         self.succ = model.search_successors()
@@ -71,6 +71,7 @@ class _Builder:
         clear = model.grid.default
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
+        self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
         if self.rng:
             self.rng.shuffle(self.walkers)
         # actions that clear a cell without moving: a gathering walk may use them when blocked in
@@ -201,7 +202,7 @@ class _Builder:
     def _floor(self, todo) -> dict:
         """{variable: amount} the pending atoms `todo` (and the goal) still take: what a
         search on the way to something else must not spend (on scaffolding, say)."""
-        return self.supplies.demand(todo.values(), self.wanted) if self.supplies else {}
+        return self.supplies.demand(todo.values(), self.wanted) if self.supplies and self.reserve else {}
 
     def _spends(self, s, n, floor) -> bool:
         """The step s -> n takes a variable below what `floor` keeps for the pending atoms."""
@@ -508,5 +509,6 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
         result = get_solver("gbfs")(model, budget, progress)
         result.solver = NAME
         return result
-    run = serialise(model, lambda seed: _Builder(model, cells, meter, budget, local_limit, seed), meter)
+    run = serialise(model, lambda seed, keep, try_meter: _Builder(model, cells, try_meter, budget, local_limit, seed, keep),
+                    meter, budget)
     return finish(model, budget, meter, run, improve, progress)

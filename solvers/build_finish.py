@@ -4,9 +4,13 @@ short of the goal, and the shorter plan made of what it found.
 - **Tries.** The builder (solvers/build.py) is deterministic, and which of two equally
   near places or atoms it takes first can decide whether it strands itself (the last
   cell walled in by scaffolding). When a try stops short of the goal, another one starts
-  from the start with other ties (its walks' action order shuffled by a seed), while the
-  budget lasts, at most TRIES in all; the try that reached the goal, or else the one that
-  left the fewest atoms, is kept.
+  from the start, while the budget lasts, at most len(TRIES) in all; the try that reached
+  the goal, or else the one that left the fewest atoms, is kept. The first keeps what the
+  pending atoms take (no search spends it, on scaffolding say: a world holding just the
+  blocks a roof needs); the second does not (a structure whose scaffolds must borrow the
+  blocks it is made of, and give them back); the others keep it, with other ties (their
+  walks' action order shuffled by a seed). Each try but the last may take half the time
+  left: one way that grinds cannot starve the other.
 - **The fallback rule** (`search_may_help`, the one place of it). gbfs gets what is left
   of the budget from the state reached only where a search may help: the goal has a
   conjunct other than cell atoms and amounts to gather (which the builder does not
@@ -25,7 +29,7 @@ from .base import Budget, Result, budget_result
 from .shorten import eliminate
 
 NAME = "build"
-TRIES = 4               # runs of the builder, each with other ties, while the goal is not reached
+TRIES = ((0, True), (0, False), (1, True), (2, True), (3, True))   # (seed of the ties, keep) of each try
 FALLBACK_UP_TO = 3      # atoms left (and no amount short) for which the gbfs fallback still runs
 SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_STATES = 100_000
@@ -70,16 +74,41 @@ class Run:
     bound: int
 
 
-def serialise(model, make_builder, meter) -> Run:
+class _TryMeter:
+    """The run's meter, which also says TRY_SPENT once this try's share of the time is gone."""
+
+    def __init__(self, meter, until: float | None):
+        self.meter, self.until = meter, until
+
+    @property
+    def mask(self) -> int:
+        return self.meter.mask
+
+    def check(self, *counts):
+        which = self.meter.check(*counts)
+        if which is None and self.until is not None and self.meter.elapsed() > self.until:
+            return TRY_SPENT
+        return which
+
+
+TRY_SPENT = "try"
+
+
+def serialise(model, make_builder, meter, budget: Budget) -> Run:
     """The builder's tries (module docstring): the first that reaches the goal, else the
     one that left the fewest atoms. Its stats count every try."""
     from ..heuristics.goal_cells import lower_bound
     best, stats = None, dict(expanded=0, generated=0, stored=0)
-    for seed in range(TRIES):
-        builder = make_builder(seed)
+    for k, (seed, keep) in enumerate(TRIES):
+        until = None
+        if budget.time_limit is not None and k < len(TRIES) - 1:
+            until = meter.elapsed() + max(0.0, budget.time_limit - meter.elapsed()) / 2
+        builder = make_builder(seed, keep, _TryMeter(meter, until))
         if best is None:
             bound = lower_bound(builder.cells, model, model.initial, builder.read)
         plan, state, why = builder.run(model.initial)
+        if why == TRY_SPENT:       # this try's share is gone: the next one starts
+            why = None
         stats = dict(expanded=stats["expanded"] + builder.expanded, generated=stats["generated"] + builder.generated,
                      stored=stats["stored"] + builder.expanded)
         run = Run(builder, plan, state, why, stats, bound)
