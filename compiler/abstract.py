@@ -203,16 +203,9 @@ def _pair_cmp(op: str, a: frozenset, b: frozenset) -> frozenset:
         can_equal = not a.isdisjoint(b)
         can_differ = len(a) > 1 or len(b) > 1 or a != b
         can_true, can_false = (can_equal, can_differ) if op == "==" else (can_differ, can_equal)
-    else:
-        alo, ahi, blo, bhi = min(a), max(a), min(b), max(b)
-        if op == "<":
-            can_true, can_false = alo < bhi, ahi >= blo
-        elif op == "<=":
-            can_true, can_false = alo <= bhi, ahi > blo
-        elif op == ">":
-            can_true, can_false = ahi > blo, alo <= bhi
-        else:
-            can_true, can_false = ahi >= blo, alo < bhi
+    else:     # for whole sets of values an order is settled by their bounds alone
+        sure, never = _interval_cmp(op, min(a), max(a), min(b), max(b))
+        can_true, can_false = not never, not sure
     if can_true and can_false:
         return UNKNOWN_BOOL
     return _TRUE if can_true else _FALSE
