@@ -7,7 +7,7 @@ short of the goal, and the shorter plan made of what it found.
   from the start, while the budget lasts, at most len(TRIES) in all; the try that reached
   the goal, or else the one that left the fewest atoms, is kept. The first keeps what the
   pending atoms take (no search spends it, on scaffolding say: a world holding just the
-  blocks a roof needs); the second does not (a structure whose scaffolds must borrow the
+  blocks its top needs); the second does not (a structure whose scaffolds must borrow the
   blocks it is made of, and give them back); the others keep it, with other ties (their
   walks' action order shuffled by a seed). Each try but the last may take half the time
   left: one way that grinds cannot starve the other.
