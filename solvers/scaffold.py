@@ -214,21 +214,14 @@ def stand_near(b, state, places, todo, depth=MAX_DEPTH):
                 return path
             continue
         path, s = [], state
-        for cell in fill:
-            sub = make_solid(b, s, cell, todo, depth)
+        for make, cell in [(make_solid, c) for c in fill] + [(make_free, c) for c in clear]:
+            sub = make(b, s, cell, todo, depth)
             if sub is None:
                 break
             path += sub
             s = path[-1][1] if path else s
         else:
-            for cell in clear:
-                sub = make_free(b, s, cell, todo, depth)
-                if sub is None:
-                    break
-                path += sub
-                s = path[-1][1] if path else s
-            else:
-                if path:
-                    return path
+            if path:
+                return path
     return None
 
