@@ -19,3 +19,12 @@ def compiled(name: str, goal: str | None = None):
 @pytest.fixture
 def model_of():
     return compiled
+
+
+def replays(model, plan) -> bool:
+    """The plan, stepped through the simulator's apply, reaches the goal."""
+    s = model.initial
+    for name in plan:
+        s = model.apply(model.action_index(name), s)
+        assert s is not None, name
+    return model.is_goal(s)

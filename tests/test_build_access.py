@@ -15,15 +15,9 @@ from bcc.heuristics.goal_cells import goal_cells
 from bcc.solvers import Budget, get_solver
 from bcc.solvers.base import Meter
 
+from conftest import replays
+
 HERE = Path(__file__).parent / "structures"
-
-
-def replays(model, plan) -> bool:
-    s = model.initial
-    for name in plan:
-        s = model.apply(model.action_index(name), s)
-        assert s is not None, name
-    return model.is_goal(s)
 
 
 def builder_of(model):
@@ -164,9 +158,4 @@ def test_blueprints_whose_scaffolds_borrow_their_blocks_are_built(seed):
         path.write_text(st.random_blueprint(seed))
         model = compile_dungeon(path)
         result = get_solver("build")(model, Budget(time_limit=120))
-        assert result.solved
-        state = model.initial
-        for name in result.plan:
-            state = model.apply(model.action_index(name), state)
-            assert state is not None
-        assert model.is_goal(state) and len(result.plan) >= result.lower_bound
+        assert result.solved and replays(model, result.plan) and len(result.plan) >= result.lower_bound

@@ -17,20 +17,13 @@ from bcc.generate_structures import generate_structure
 from bcc.heuristics.goal_cells import CellReader, goal_cells, lower_bound, support_levels
 from bcc.solvers import Budget, default_solver, get_solver
 
+from conftest import replays
+
 HERE = Path(__file__).parent / "structures"
 
 
 def bcc(*args, cwd=None):
     return subprocess.run([sys.executable, "-m", "bcc", *map(str, args)], capture_output=True, text=True, cwd=cwd)
-
-
-def replays(model, plan) -> bool:
-    """The plan, stepped through the simulator's apply, reaches the goal."""
-    s = model.initial
-    for name in plan:
-        s = model.apply(model.action_index(name), s)
-        assert s is not None, name
-    return model.is_goal(s)
 
 
 def test_blueprint_compiles_to_its_cell_atoms():
