@@ -12,9 +12,11 @@ one with `run_limited`, so a runaway run never takes a Ray worker down.
 """
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
 import os
 import signal
+import threading
 import time
 from dataclasses import dataclass
 from multiprocessing.connection import wait
@@ -73,6 +75,7 @@ def _die_with_parent() -> None:
 
 def _child_main(conn, function, item, memory_mb, orphan_kill) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})  # the pool forks with it held
     if orphan_kill:
         _die_with_parent()
     if memory_mb is not None:
@@ -167,7 +170,8 @@ def run_limited(function, item, limits: Limits, index: int = 0, prepare=None) ->
     """Run function(item) in a child process under `limits`; always returns an Outcome.
     `prepare(item)` runs first, in this process (see `map_runs`)."""
     run_prepare(prepare, item)
-    child = Child(index, function, item, limits, orphan_kill=False)
+    with timer_held():
+        child = Child(index, function, item, limits, orphan_kill=False)
     try:
         timeout = None if child.deadline is None else max(child.deadline - time.monotonic(), 0)
         ready = wait(child.waitables(), timeout)
@@ -175,3 +179,19 @@ def run_limited(function, item, limits: Limits, index: int = 0, prepare=None) ->
     except BaseException:
         child.kill()
         raise
+
+
+@contextlib.contextmanager
+def timer_held():
+    """Hold back the budget's timer (solvers/limits.py: it fires again every 0.25 s once the
+    time is spent) while a child is started and recorded, or children are killed and
+    reaped: a raise in between would leave one running. A signal that came meanwhile is
+    delivered after."""
+    held = threading.current_thread() is threading.main_thread()
+    if held:
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
+    try:
+        yield
+    finally:
+        if held:
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})

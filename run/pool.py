@@ -7,14 +7,11 @@ worker dies. Outcomes come back in completion order.
 """
 from __future__ import annotations
 
-import contextlib
-import signal
-import threading
 import time
 from multiprocessing.connection import wait
 from typing import Callable, Iterable, Iterator
 
-from .children import Child, Limits, Outcome, run_prepare
+from .children import Child, Limits, Outcome, run_prepare, timer_held
 
 
 def map_local(function, items: Iterable, workers: int, limits_of: Callable[[object], Limits],
@@ -31,7 +28,9 @@ def map_local(function, items: Iterable, workers: int, limits_of: Callable[[obje
                     break
                 index, item = nxt
                 run_prepare(prepare, item)
-                running[index] = Child(index, function, item, limits_of(item))
+                limits = limits_of(item)
+                with timer_held():  # no raise between the fork and the child's entry in `running`
+                    running[index] = Child(index, function, item, limits)
             if not running:
                 return
             deadlines = [c.deadline for c in running.values() if c.deadline is not None]
@@ -48,21 +47,23 @@ def map_local(function, items: Iterable, workers: int, limits_of: Callable[[obje
                     del running[index]
                     yield child.expire()
     finally:  # Ctrl-C, a spent budget, or the consumer stopped early: no child outlives the sweep
-        with _timer_held():
-            for child in running.values():
-                child.kill()
+        _kill_all(running)
 
 
-@contextlib.contextmanager
-def _timer_held():
-    """Hold back the budget's timer (solvers/limits.py: it fires again every 0.25 s once the
-    time is spent) while children are killed and reaped: a raise in the middle of the sweep
-    would leave the rest running. A signal that came meanwhile is delivered after."""
-    held = threading.current_thread() is threading.main_thread()
-    if held:
-        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
-    try:
-        yield
-    finally:
-        if held:
-            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})
+def _kill_all(running: dict[int, Child]) -> None:
+    """Kill and reap every child in `running`, with the budget's timer held back. A raise can
+    still land inside the hold when its signal came just before it (its handler runs at the
+    next step, e.g. after a long garbage collection on a loaded machine): the sweep then goes
+    on with the children left, and the first such error is raised once all are reaped."""
+    error: BaseException | None = None
+    while running:
+        try:
+            with timer_held():
+                while running:
+                    index, child = next(iter(running.items()))
+                    child.kill()        # idempotent: a retry after a raise inside it is safe
+                    del running[index]
+        except BaseException as exc:  # noqa: BLE001 - kept and raised after the sweep
+            error = error or exc
+    if error is not None:
+        raise error

@@ -1,6 +1,7 @@
 """The one run path (bcc/run): what every edge gets from it, whoever calls it."""
 from __future__ import annotations
 
+import signal
 import time
 
 import pytest
@@ -9,6 +10,7 @@ from bcc.errors import BccError
 from bcc.run import Request, run
 from bcc.solvers import Budget, get_solver
 from bcc.solvers.base import Meter
+from bcc.solvers.limits import hard_limits
 
 from conftest import compiled
 
@@ -76,7 +78,7 @@ def test_a_spent_budget_stops_every_child_even_when_reaping_is_slow(monkeypatch)
     import multiprocessing
 
     from bcc.run import children, pool
-    from bcc.solvers.limits import BudgetExceeded, hard_limits
+    from bcc.solvers.limits import BudgetExceeded
     kill = children.Child.kill
 
     def slow_kill(self):
@@ -88,3 +90,39 @@ def test_a_spent_budget_stops_every_child_even_when_reaping_is_slow(monkeypatch)
             for _ in pool.map_local(time.sleep, [30, 30, 30], 2, lambda item: children.Limits()):
                 pass
     assert not multiprocessing.active_children()
+
+
+def test_a_raise_that_lands_inside_the_sweep_still_leaves_no_child(monkeypatch):
+    """A signal that came just before the hold runs its handler inside it (seen in CI: a long
+    garbage collection on a loaded machine, then both children left running); here the
+    first kill raises as that handler would, and the sweep still reaps every child."""
+    import multiprocessing
+
+    from bcc.run import children, pool
+    from bcc.solvers.limits import BudgetExceeded
+    kill, raised = children.Child.kill, []
+
+    def kill_raising_once(self):
+        if not raised:
+            raised.append(self.index)
+            raise BudgetExceeded("time_limit")
+        kill(self)
+    monkeypatch.setattr(children.Child, "kill", kill_raising_once)
+    sweep = pool.map_local(time.sleep, [30, 30, 30], 2, lambda item: children.Limits())
+    with pytest.raises(BudgetExceeded):
+        with hard_limits(Budget(time_limit=0.3), grace=0.0):
+            for _ in sweep:
+                pass
+    assert raised and not multiprocessing.active_children()
+
+
+def _held_signals(_item):
+    return signal.pthread_sigmask(signal.SIG_BLOCK, [])
+
+
+def test_children_start_with_the_budget_timer_unblocked():
+    """The pool forks with SIGALRM held (so no raise separates a fork from its record); a
+    child's own budget timer must still fire."""
+    from bcc.run import children, pool
+    outcomes = list(pool.map_local(_held_signals, [0, 1], 2, lambda item: children.Limits()))
+    assert all(o.ok and signal.SIGALRM not in o.value for o in outcomes)
