@@ -396,23 +396,65 @@ class _Builder:
             plan, state = reached or ([], start)
             return plan, state, spent.args[0]
 
-    def _run(self, start, reached):
-        cells, read = self.cells, self.read
-        waits = orders(cells)                 # q -> atoms that must come before q
+    def _orders(self, start):
+        """The pending atoms (`self.todo`; those already holding are protected) and the
+        orders among them: (todo, blockers: q -> how many atoms q still waits for,
+        released: p -> [q] that wait for p)."""
+        waits = orders(self.cells)             # q -> atoms that must come before q
         blockers = {q: len(ps) for q, ps in waits.items()}
-        released = {}                          # p -> [q] that wait for p
+        released = {}
         for q, ps in waits.items():
             for p in ps:
                 released.setdefault(p, []).append(q)
         todo = self.todo = {}
-        for pos, v in cells.atoms:
-            if read(start, *pos) == v:
+        for pos, v in self.cells.atoms:
+            if self.read(start, *pos) == v:
                 self.protected[pos] = v
             else:
                 todo[pos] = v
         for pos in self.protected:
             for q in released.get(pos, ()):
                 blockers[q] -= 1
+        return todo, blockers, released
+
+    def _short(self, state, todo, plan) -> dict:
+        """What to gather before the next atom: the amounts the pending atoms (and the goal)
+        take beyond what is held, less those no gathering walk raised at this plan length
+        (or earlier, unless too little is left to write even one atom)."""
+        short = self.supplies.short(state, todo.values(), self.wanted) if self.supplies else {}
+        return {v: k for v, k in short.items()
+                if self.exhausted.get(v) is None or (self.exhausted[v] != len(plan) and self._blocked(state, v))}
+
+    def _nearest(self, state, todo, keep) -> list:
+        """[(distance to its nearest standing place, position)] of the pending atoms for
+        which `keep(position)` holds, nearest first."""
+        here = self.model.agent_position(state)
+        return sorted((min((_distance(here, p) for p in self.cells.standing((pos, v))), default=0), pos)
+                      for pos, v in todo.items() if keep(pos))
+
+    def _first_written(self, state, todo, candidates, set_aside):
+        """The path that writes the first of `candidates` that can be written (its footing
+        prepared for the nearest few, else the greedy search): (path, "ok"), or (None,
+        "failed" | budget name). A candidate that fails is set aside."""
+        for k, (_, pos) in enumerate(candidates):
+            if self.supplies and self._starved(state, todo[pos]):
+                set_aside[pos] = RETRY
+                continue
+            path = self.prepare(state, pos, todo) if k < CANDIDATES and self.footing[0] else None
+            why = "ok"
+            if path is None:
+                path, why = self.reach(state, (pos, todo[pos]))
+            if why not in ("ok", "failed"):
+                return None, why
+            if path is None:
+                set_aside[pos] = RETRY
+                continue
+            return path, "ok"
+        return None, "failed"
+
+    def _run(self, start, reached):
+        cells, read = self.cells, self.read
+        todo, blockers, released = self._orders(start)
         plan, state, set_aside = [], start, {}    # set aside: position -> achievements left to wait
         reached[:] = [plan, state]
         retried = -1               # plan length when the set-aside atoms were last given another try
@@ -428,9 +470,7 @@ class _Builder:
             def eligible(p):
                 return level.get(p, late) <= lowest and p not in set_aside and blockers.get(p, 0) <= 0 \
                     and ready(cells, read, state, (p, todo[p])) and not self._walls_in(p)
-            short = self.supplies.short(state, todo.values(), wanted) if self.supplies else {}
-            short = {v: k for v, k in short.items()
-                     if self.exhausted.get(v) is None or (self.exhausted[v] != len(plan) and self._blocked(state, v))}
+            short = self._short(state, todo, plan)
             if short:   # gather what writing the pending atoms takes, nearest first
                 if not todo:   # no atom left to stand for: earlier footing may be taken
                     self.keep.clear()
@@ -446,42 +486,22 @@ class _Builder:
                 if not todo:
                     return plan, state, None
             path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit)
-            if path is not None:
-                plan.extend(a for a, _ in path)
-                state = path[-1][1]
-                self._achieved(state, todo, released, blockers)
-                self._forgive(set_aside)
-                continue
-            here = self.model.agent_position(state)
-            candidates = sorted(
-                (min((_distance(here, p) for p in cells.standing((pos, v))), default=0), pos)
-                for pos, v in todo.items() if eligible(pos))
-            if not candidates and lowest >= late:   # nothing ready: what they rest on is built first
-                candidates = sorted(
-                    (min((_distance(here, p) for p in cells.standing((pos, v))), default=0), pos)
-                    for pos, v in todo.items() if pos not in set_aside and blockers.get(pos, 0) <= 0
-                    and not self._walls_in(pos))
-            progressed = False
-            for k, (_, pos) in enumerate(candidates):
-                if self.supplies and self._starved(state, todo[pos]):
-                    set_aside[pos] = RETRY
-                    continue
-                path = self.prepare(state, pos, todo) if k < CANDIDATES and self.footing[0] else None
-                why = "ok"
-                if path is None:
-                    path, why = self.reach(state, (pos, todo[pos]))
+            why = "ok" if path is not None else None
+            if path is None:
+                candidates = self._nearest(state, todo, eligible)
+                if not candidates and lowest >= late:   # nothing ready: what they rest on is built first
+                    candidates = self._nearest(state, todo, lambda pos: pos not in set_aside
+                                               and blockers.get(pos, 0) <= 0 and not self._walls_in(pos))
+                path, why = self._first_written(state, todo, candidates, set_aside)
                 if why not in ("ok", "failed"):
                     return plan, state, why
-                if path is None:
-                    set_aside[pos] = RETRY
-                    continue
+            if why == "ok":
                 plan.extend(a for a, _ in path)
                 state = path[-1][1] if path else state
                 self._achieved(state, todo, released, blockers)
                 self._forgive(set_aside)
-                progressed = True
-                break
-            if not progressed and lowest >= late:
+                continue
+            if lowest >= late:
                 if self.strict:    # every atom left walls another in: one of them must be written
                     self.strict = False
                     continue
@@ -490,8 +510,7 @@ class _Builder:
                     retried = len(plan)
                     continue
                 return plan, state, None
-            if not progressed:      # every atom of the lowest level is set aside: the next level
-                set_aside.update((p, RETRY) for p in todo if level.get(p, late) <= lowest)
+            set_aside.update((p, RETRY) for p in todo if level.get(p, late) <= lowest)   # the next level
         return plan, state, None
 
 
