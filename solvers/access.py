@@ -8,9 +8,16 @@ q (a cell walled in by other atoms, the middle of a slab), q must be written bef
 last of those blocks, or never: the support levels and orders do not say so, since they
 read only what an achiever needs on its own cells. `Access.kills(state-free view, p)`
 tells the serialiser that writing p now would leave some pending atom without a place.
+`exit_orders` looks further ahead, once at the start: a pending atom all of whose places
+have goal cells in their bodies (a floor cell inside walls) must be written before those
+cells, which must in turn be written before the cells their own place needs, out to a
+place that stays free; the orders it returns say so, so the region fills from the inside
+out instead of closing its last cell in.
 Nothing here knows what the cells or values mean.
 """
 from __future__ import annotations
+
+import heapq
 
 
 def _add(p, o):
@@ -54,3 +61,66 @@ class Access:
             if q != p and q in todo and self._live(q, filled) and not self._live(q, filled, p):
                 return True
         return False
+
+
+def exit_orders(access: Access, todo: dict, holding: set, waits: dict) -> dict:
+    """{q: [p, ...]} (q waits for p) for the pending atoms `todo` (position -> value) whose
+    every standing place has a pending goal cell in its body. depth(p) is 0 when p has a
+    place whose body holds no goal cell (cells that need not stay as they are count as
+    free: what is not in the goal may be cleared), else 1 + the least, over its places,
+    of the greatest depth of the pending atoms in the body; a place with an atom that
+    already holds (`holding`) in its body is closed for good. Each atom of depth > 0 keeps
+    the place of least depth, and the pending atoms in its body wait for it; an order
+    that would close a cycle with `waits` (the orders the actions imply) is left out."""
+    pending = {p for p, v in todo.items() if v != access.default}
+    depth, heap = {}, []
+    left, worst, users = {}, {}, {}      # place -> pending body atoms not yet resolved / their greatest depth
+    for p in pending:
+        for st in access.places.get(p, ()):
+            body = access.body[st]
+            if any(c in holding for c in body):
+                continue
+            inside = [c for c in body if c in pending and c != p]
+            if not inside:
+                heapq.heappush(heap, (0, p, st))
+                continue
+            if st not in left:
+                left[st], worst[st] = len(inside), -1
+                for c in inside:
+                    users.setdefault(c, []).append(st)
+            users.setdefault(("place", st), []).append(p)
+    chosen = {}
+    while heap:
+        d, p, st = heapq.heappop(heap)
+        if p in depth:
+            continue
+        depth[p], chosen[p] = d, st
+        for place in users.get(p, ()):
+            left[place] -= 1
+            worst[place] = max(worst[place], d)
+            if left[place] == 0:
+                for q in users.get(("place", place), ()):
+                    if q not in depth:
+                        heapq.heappush(heap, (worst[place] + 1, q, place))
+    out: dict = {}
+    for p, d in depth.items():
+        if d == 0:
+            continue
+        for c in access.body[chosen[p]]:
+            if c in pending and c != p and not _reaches(waits, p, c):
+                out.setdefault(c, []).append(p)
+    return out
+
+
+def _reaches(waits: dict, start, goal, limit: int = 10_000) -> bool:
+    """`start` waits for `goal`, directly or through other atoms, in `waits`."""
+    seen, stack = {start}, [start]
+    while stack and len(seen) < limit:
+        q = stack.pop()
+        for p in waits.get(q, ()):
+            if p == goal:
+                return True
+            if p not in seen:
+                seen.add(p)
+                stack.append(p)
+    return False

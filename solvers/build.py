@@ -8,20 +8,24 @@ state with h = the walk to its nearest standing place, never changing an atom al
 achieved (each achieved atom is *protected*). An atom whose search fails is set aside
 until another one is achieved. When nothing is ready or every ready atom fails, or when
 the goal's other conjuncts remain, gbfs finishes from the state reached (the fallback),
-with what is left of the budget. Nothing here knows what is being built.
+with what is left of the budget. Two things are planned at the start: columns under the
+atoms that rest on nothing the goal builds (scaffold.planned_supports: serialised with
+the goal's atoms, they stay), and orders that fill an enclosed region from the inside out
+(access.exit_orders). Nothing here knows what is being built.
 
 The result carries `lower_bound` (goal_cells.lower_bound at the start: admissible).
 """
 from __future__ import annotations
 
+import dataclasses
 import heapq
 import itertools
 import random
 
 from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound, orders, ready, support_levels
 from ..heuristics.supplies import supplies, wanted
-from .access import Access
-from .scaffold import CANDIDATES, make_solid, stand_near, write_cell
+from .access import Access, exit_orders
+from .scaffold import CANDIDATES, make_solid, planned_supports, stand_near, write_cell
 from ..errors import ModelError
 from .base import Budget, Meter, Result
 from .options import Option, declare
@@ -92,6 +96,7 @@ class _Builder:
             self.rests_on[v] = set.intersection(*units)
         spare = [r for v, r in self.rests_on.items() if v is not None and v != model.grid.default and cells.achievers[v]]
         self.rests_on_any = set.intersection(*spare) if spare else set()   # what any written block rests on
+        self.goal = {pos for pos, _ in cells.atoms}   # the goal's cells (planned supports join `cells` later)
         self.by_place = {}             # standing place -> [(atom position, achiever action)]
         for pos, v in cells.atoms:
             for a in cells.achievers.get(v, ()):
@@ -371,6 +376,10 @@ class _Builder:
             walk = pre + walk
         return path + walk
 
+    def goal_left(self) -> int:
+        """How many of the goal's atoms are still pending (planned supports aside)."""
+        return sum(p in self.goal for p in self.todo)
+
     @staticmethod
     def _forgive(set_aside):
         for p in list(set_aside):
@@ -401,6 +410,11 @@ class _Builder:
         orders among them: (todo, blockers: q -> how many atoms q still waits for,
         released: p -> [q] that wait for p)."""
         waits = orders(self.cells)             # q -> atoms that must come before q
+        if self.access is not None:
+            todo = {pos: v for pos, v in self.cells.atoms if self.read(start, *pos) != v}
+            holding = {pos for pos, v in self.cells.atoms if pos not in todo}
+            for q, ps in exit_orders(self.access, todo, holding, waits).items():
+                waits.setdefault(q, []).extend(ps)
         blockers = {q: len(ps) for q, ps in waits.items()}
         released = {}
         for q, ps in waits.items():
@@ -452,7 +466,23 @@ class _Builder:
             return path, "ok"
         return None, "failed"
 
+    def _plan_supports(self, start):
+        """Serialise planned supports (scaffold.planned_supports) with the goal's atoms:
+        they join `cells` (a copy: the goal and its lower bound stay as they are)."""
+        todo = {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
+        extra = planned_supports(self, start, todo, support_levels(self.cells, self.read, start))
+        if not extra:
+            return
+        self.cells = dataclasses.replace(self.cells, atoms=[*self.cells.atoms, *extra.items()])
+        for pos, v in extra.items():
+            for a in self.cells.achievers.get(v, ()):
+                place = (pos[0] - a.write[0], pos[1] - a.write[1], pos[2] - a.write[2])
+                self.by_place.setdefault(place, []).append((pos, a.action))
+        if self.access is not None:
+            self.access = Access(self.cells, self.footing[1], self.model.grid.default)
+
     def _run(self, start, reached):
+        self._plan_supports(start)
         cells, read = self.cells, self.read
         todo, blockers, released = self._orders(start)
         plan, state, set_aside = [], start, {}    # set aside: position -> achievements left to wait

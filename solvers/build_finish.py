@@ -52,7 +52,7 @@ def search_may_help(builder, state) -> bool:
         return True
     sup = builder.supplies
     short = sup.short(state, (), builder.wanted) if sup else {}
-    if len(builder.todo) <= FALLBACK_UP_TO and not short:
+    if builder.goal_left() <= FALLBACK_UP_TO and not short:
         return True
     return bool(sup) and any(builder._starved(state, v) for v in builder.todo.values())
 
@@ -60,7 +60,7 @@ def search_may_help(builder, state) -> bool:
 def gave_up(builder, state) -> str:
     sup = builder.supplies
     short = sup.short(state, (), builder.wanted) if sup else {}
-    return (f"the build solver stopped with {len(builder.todo)} goal cell atom(s) unwritten and {len(short)} "
+    return (f"the build solver stopped with {builder.goal_left()} goal cell atom(s) unwritten and {len(short)} "
             "amount(s) short: it is not complete; --solver gbfs searches the whole space")
 
 
@@ -112,7 +112,7 @@ def serialise(model, make_builder, meter, budget: Budget) -> Run:
         stats = dict(expanded=stats["expanded"] + builder.expanded, generated=stats["generated"] + builder.generated,
                      stored=stats["stored"] + builder.expanded)
         run = Run(builder, plan, state, why, stats, bound)
-        if best is None or (why is None and len(builder.todo) < len(best.builder.todo)):
+        if best is None or (why is None and builder.goal_left() < best.builder.goal_left()):
             best = run
         if why is not None or model.is_goal(state):
             return run if why is None else dataclasses.replace(best, why=why)

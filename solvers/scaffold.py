@@ -43,6 +43,37 @@ def spare_value(b, state, todo):
     return best
 
 
+def planned_supports(b, state, todo, level) -> dict:
+    """{cell: value}: the columns to build under the atoms that never become ready (no
+    support level: what they rest on is outside the goal and empty, e.g. a top over an
+    enclosed space), down to a solid cell or a goal cell, in one spare value. They are
+    serialised with the goal's atoms, so they rise with the rest while every cell is in reach,
+    instead of being made last, from a place that may be closed in by then. Empty when no
+    spare value has enough left over for all of them."""
+    default, grid = b.model.grid.default, b.model.grid
+    goal = {p for p, _ in b.cells.atoms}
+    value = spare_value(b, state, todo)
+    if value is None:
+        return {}
+    out: dict = {}
+    for p, v in todo.items():
+        if p in level:
+            continue
+        stack = [_add(p, rel) for rel in b.rests_on.get(v, ())]
+        while stack:
+            c = stack.pop()
+            if c in out or c in goal or not _inside(grid, c) or b.read(state, *c) != default:
+                continue
+            out[c] = value
+            stack.extend(_add(c, rel) for rel in b.rests_on.get(value, ()))
+    sup = b.supplies
+    if out and sup:
+        demand = sup.demand(list(todo.values()) + [value] * len(out), b.wanted)
+        if any(sup.value(state, var) < demand.get(var, 0) for var, _ in sup.uses.get(value, ())):
+            return {}
+    return out
+
+
 def gather_spare(b, state, todo):
     """A path [(action, state)] that gathers one unit of a supply no pending atom takes
     (the nearest), for a value that can then be written anywhere; None if none is found."""
@@ -86,7 +117,7 @@ def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
     if depth < 0 or not _inside(b.model.grid, cell) or cell in b.protected:
         return None
     value = todo.get(cell)
-    if value == default:
+    if value == default or (value is not None and b._walls_in(cell)):   # (the last place of another atom)
         return None
     path = []
     rests = b.rests_on.get(value, ()) if value is not None else b.rests_on_any

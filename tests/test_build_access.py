@@ -159,3 +159,71 @@ def test_blueprints_whose_scaffolds_borrow_their_blocks_are_built(seed):
         model = compile_dungeon(path)
         result = get_solver("build")(model, Budget(time_limit=120))
         assert result.solved and replays(model, result.plan) and len(result.plan) >= result.lower_bound
+
+
+def test_exit_orders_fill_a_slab_from_the_middle_out():
+    # court.yaml: a 5 x 5 slab, each cell placed from a cell beside it at feet level. The
+    # outer ring has places off the slab (depth 0), the inner ring only on the outer ring
+    # (depth 1), the middle only on the inner ring (depth 2). Each atom of depth > 0 keeps
+    # one place, whose cell waits for it: the orders step down one ring between neighbours.
+    from bcc.solvers.access import Access, exit_orders
+    model = compile_dungeon(str(HERE / "court.yaml"))
+    cells = goal_cells(model)
+    access = Access(cells, {(0, 0, 0), (0, 1, 0)}, model.grid.default)
+    todo = dict(cells.atoms)
+    middle = (3, 1, 3)
+    depth = {p: 2 - max(abs(p[0] - 3), abs(p[2] - 3)) if max(abs(p[0] - 3), abs(p[2] - 3)) < 2 else 0 for p in todo}
+    waits = exit_orders(access, todo, set(), {})
+    pairs = [(q, p) for q, ps in waits.items() for p in ps]
+    assert sorted(p for _, p in pairs) == sorted(p for p in todo if depth[p] > 0)   # one kept place each
+    for q, p in pairs:
+        assert depth[p] == depth[q] + 1 and abs(p[0] - q[0]) + abs(p[2] - q[2]) == 1
+    # an order that would close a cycle with the orders already known is left out
+    known = {middle: [q for q, p in pairs if p == middle]}
+    assert middle not in [p for ps in exit_orders(access, todo, set(), known).values() for p in ps]
+
+
+def test_planned_supports_are_the_columns_under_a_roof_over_a_room():
+    # hut.yaml: the roof (3 x 3 at y = 3) lies over the room's air; a block is placed only
+    # on another, so each roof cell needs the two cells under it (y = 1, 2): 18 cells
+    from bcc.heuristics.goal_cells import support_levels
+    from bcc.solvers.scaffold import planned_supports
+    model = compile_dungeon(str(HERE / "hut.yaml"))
+    b = builder_of(model)
+    todo = dict(b.cells.atoms)
+    extra = planned_supports(b, model.initial, todo, support_levels(b.cells, b.read, model.initial))
+    stone = model.grid.value_names.index("stone")
+    assert extra == {(x, y, z): stone for x in (2, 3, 4) for z in (2, 3, 4) for y in (1, 2)}
+
+
+def test_no_planned_supports_without_the_blocks_for_them(tmp_path):
+    # the same hut with 41 stones: just the goal's 41 cells, none left for the columns
+    from bcc.heuristics.goal_cells import support_levels
+    from bcc.solvers.scaffold import planned_supports
+    text = (HERE / "hut.yaml").read_text().replace("count: 60", "count: 41")
+    (tmp_path / "hut41.yaml").write_text(text)
+    model = compile_dungeon(str(tmp_path / "hut41.yaml"))
+    b = builder_of(model)
+    todo = dict(b.cells.atoms)
+    assert planned_supports(b, model.initial, todo, support_levels(b.cells, b.read, model.initial)) == {}
+
+
+def test_build_raises_the_columns_under_a_roof_with_the_walls():
+    # without planned supports the room closes before its columns rise, and without the
+    # exit orders the columns' own cells are walled in; the plan places at least the 41
+    # goal cells and the 18 columns, and replays
+    model = compile_dungeon(str(HERE / "hut.yaml"))
+    result = get_solver("build")(model, Budget(time_limit=120), improve=0)
+    assert result.solved and replays(model, result.plan)
+    assert sum(name.startswith("place") for name in result.plan) >= 41 + 18
+
+
+def test_solve_builds_the_hut_from_the_command_line(tmp_path):
+    import json
+    import subprocess
+    import sys
+    out = subprocess.run([sys.executable, "-m", "bcc", "solve", str(HERE / "hut.yaml"), "--json", "--time-limit", "120"],
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    result = json.loads(out.stdout)
+    assert result["solver"] == "build" and result["solved"] and result["lower_bound"] <= result["cost"]
