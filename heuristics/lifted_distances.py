@@ -15,6 +15,14 @@ next one. Two generic pieces give that distance, both read off the action schema
   type has few objects (an agent) taken over its objects. Each such instance costs the
   sum of its functional atoms' distances plus one per other ground conjunct that is false
   ("a block below the target"); the landmark costs one more than its cheapest instance.
+- **Entering a value.** A graph's distance says nothing of what the last step onto the
+  wanted value needs: a one-level step up needs something to stand on. So an instance's
+  wanted values of one object (its x, y and z together) are regressed once through the
+  schemas that add one of them: each such schema bound so that it ends there (a value
+  the schema does not change is the one wanted), its static atoms binding the rest (the
+  cell it comes from). What its precondition asks of other objects there, ground, is an
+  *entry*; while the object is not there yet, the instance costs one more per false
+  conjunct of its cheapest entry.
 
 The search orders states by the sum over missing landmarks (lifted_search.py).
 """
@@ -37,6 +45,7 @@ class Distances:
         self._functional: dict = {}
         self._graphs: dict = {}
         self._to: dict = {}
+        self._entries: dict = {}
 
     # ---- functional predicates and their graphs -----------------------------------------
     def functional(self, pred: str, obj: str) -> bool:
@@ -164,6 +173,66 @@ class Distances:
                 if len(out) >= MAX_INSTANCES:
                     return out
         return out
+
+    def entries(self, obj: str, wanted: tuple) -> list:
+        """[[ground conjuncts]] of each way to step onto `wanted` ((pred, value), ... of
+        functional predicates of `obj`), fewest first, none a superset of another (see
+        the module docstring); [] when no schema steps there."""
+        key = (obj, wanted)
+        got = self._entries.get(key)
+        if got is not None:
+            return got
+        task = self.task
+        want = dict(wanted)
+        found = set()
+        for a in task.dom.actions:
+            types = dict(a.params)
+            env: dict = {}
+            changed = set()
+            ok = True
+            for e in a.effects:
+                if not e.add or e.pred not in want or e.params or e.cond != TRUE:
+                    continue
+                t, v = e.args
+                if t.startswith("?") and not task.fits(obj, types.get(t, frozenset({"object"}))) or \
+                        not t.startswith("?") and t != obj:
+                    continue
+                for term, value in ((t, obj), (v, want[e.pred])):
+                    if term.startswith("?"):
+                        if env.setdefault(term, value) != value or not task.fits(value, types[term]):
+                            ok = False
+                    elif term != value:
+                        ok = False
+                changed.add(e.pred)
+            if not changed or not ok:
+                continue
+            # a wanted value the schema does not change must hold before it too
+            for c in conjuncts(a.pre):
+                if c[0] == "atom" and c[1] in want and c[1] not in changed and len(c[2]) == 2 \
+                        and env.get(c[2][0], c[2][0]) == obj and c[2][1].startswith("?"):
+                    if env.setdefault(c[2][1], want[c[1]]) != want[c[1]]:
+                        ok = False
+            if not ok:
+                continue
+            for full in self._complete(a, env, types):
+                ground = substitute(a.pre, full)
+                if any(c[0] == "atom" and c[1] not in task.fluent and not free_vars(c)
+                       and (c[1], c[2]) not in task.static for c in conjuncts(ground)):
+                    continue          # a static condition fails: this way does not exist
+                if any(c[0] == "atom" and c[1] in want and c[1] not in changed and not free_vars(c)
+                       and c[2] != (obj, want[c[1]]) for c in conjuncts(ground)):
+                    continue
+                conds = frozenset(c for c in conjuncts(ground) if not free_vars(c)
+                                  and not (c[0] == "atom" and (c[1] not in task.fluent or
+                                           len(c[2]) == 2 and c[2][0] == obj and self.functional(c[1], obj))))
+                found.add(conds)
+        kept = sorted(found, key=lambda c: (len(c), sorted(map(repr, c))))
+        out = []
+        for c in kept:
+            if not any(k <= c for k in out):
+                out.append(c)
+        got = self._entries[key] = [sorted(c, key=repr) for c in out]
+        return got
 
     def _complete(self, a, env: dict, types: dict) -> list:
         """`env` extended through the precondition's static atoms, then over small types."""

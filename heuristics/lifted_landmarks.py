@@ -14,7 +14,10 @@ what `finish` needs says more. Two steps, both read off the action schemas:
   its unbound variables existentially quantified, is the landmark's *need* ("holds at
   least one T").
 
-The search counts a missing landmark as 1, plus 1 while its need is missing too.
+The search counts a missing landmark as 1, plus 1 while its need is missing too. When
+the need is a step down a counter ("holds at least one T": the count and the static
+relation to the next lower count) that every achiever takes (`supply`), k missing
+landmarks sharing it need k steps: a count of one meets the need of each, not of all.
 """
 from __future__ import annotations
 
@@ -57,18 +60,7 @@ def needs(task: LiftedTask, mark) -> list:
     if not atoms or all(task.holds_atom(frozenset(), a[1], a[2]) for a in atoms if not free_vars(a)) and \
             not free_vars(mark) and mark[0] == "atom":
         return []
-    bound = []
-    for a in task.dom.actions:
-        types = dict(a.params)
-        for e in a.effects:
-            if not e.add or e.params or e.cond != TRUE:
-                continue
-            for atom in atoms:
-                if atom[1] != e.pred:
-                    continue
-                env = _unify(task, e.args, atom[2], types, qtypes)
-                if env is not None:
-                    bound.append((a, env, types))
+    bound = _achievers(task, mark)
     if not bound:
         return []
     shared = None
@@ -86,6 +78,61 @@ def needs(task: LiftedTask, mark) -> list:
     vs = sorted(set().union(*(free_vars(c) for c in keep)))
     body = keep[0] if len(keep) == 1 else ("and", tuple(keep))
     return [("exists", tuple((v, types0[v]) for v in vs), body) if vs else body]
+
+
+def _achievers(task: LiftedTask, mark) -> list:
+    """[(schema, binding, types)]: the schemas whose add effect can make one of the
+    landmark's atoms true, bound as far as that atom binds them."""
+    if mark[0] == "exists":
+        qtypes = dict(mark[1])
+        atoms = [c for c in conjuncts(mark[2]) if c[0] == "atom"]
+    elif mark[0] == "atom":
+        qtypes, atoms = {}, [mark]
+    else:
+        return []
+    bound = []
+    for a in task.dom.actions:
+        types = dict(a.params)
+        for e in a.effects:
+            if not e.add or e.params or e.cond != TRUE:
+                continue
+            for atom in atoms:
+                if atom[1] != e.pred:
+                    continue
+                env = _unify(task, e.args, atom[2], types, qtypes)
+                if env is not None:
+                    bound.append((a, env, types))
+    return bound
+
+
+def supply(task: LiftedTask, mark) -> tuple | None:
+    """How a landmark's achievers spend what they need, when each one takes a step down a
+    counter: (pred, binary static relation, the position of v in it) such that every
+    achiever needs `pred(..., v)` and `rel(w, v)` (or `rel(v, w)`, the same for all) and
+    replaces `pred(..., v)` by `pred(..., w)` (the same other arguments). Then k landmarks that share the need are not all met by
+    one step left on the counter ("holds one T" for five blocks of T); the search counts
+    the steps that are missing (lifted_search.py). None when the achievers differ."""
+    found = None
+    for a, env, types in _achievers(task, mark):
+        pre = conjuncts(a.pre)
+        here = set()
+        for d in a.effects:
+            if d.add or d.params or d.cond != TRUE or not d.args:
+                continue
+            o, v = d.args[:-1], d.args[-1]
+            for e in a.effects:
+                if not e.add or e.pred != d.pred or e.params or e.cond != TRUE or e.args[:-1] != o or e.args[-1] == v:
+                    continue
+                w = e.args[-1]
+                if ("atom", d.pred, d.args) not in pre or not v.startswith("?") or not w.startswith("?"):
+                    continue
+                for c in pre:
+                    if c[0] == "atom" and c[1] not in task.fluent and len(c[2]) == 2 and set(c[2]) == {v, w}:
+                        here.add((d.pred, c[1], c[2].index(v)))
+        found = here if found is None else found & here
+        if not found:
+            return None
+    return next(iter(found)) if found and len(found) == 1 else None
 
 
 def _unify(task: LiftedTask, effect_args: tuple, atom_args: tuple, types: dict, qtypes: dict) -> dict | None:

@@ -25,10 +25,11 @@ from .base import Budget, Meter, Result, budget_result
 from ..pddl_io.lifted_types import TRUE, Domain, Problem
 from ..pddl_io.lifted_joins import JoinCompiler
 from ..heuristics.lifted_distances import Distances
-from ..heuristics.lifted_landmarks import landmarks
+from ..heuristics.lifted_landmarks import landmarks, supply
 from ..pddl_io.lifted_states import LiftedTask
 
 
+SHARED_MOVES = True   # the agents' moves counted once (to the nearest landmark), not once per landmark
 WIDTH = 2     # novelty judged on single atoms (1) or also on pairs of atoms of one object (2)
 
 
@@ -195,13 +196,18 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
     def test_of(f) -> int:
         return formulas.setdefault(f, len(formulas))
 
-    plan_h = []       # per landmark: (its test, [need tests], distance or None, [(functions, other tests)])
+    plan_h = []       # per landmark: (its test, [need tests], distance or None, [(functions, other tests)], supply)
+    supplies: dict = {}   # supply (lifted_landmarks.supply) -> steps(s, k): the counter's steps left, up to k
     for m, ns in marks:
         direct = None
         if m[0] == "atom" and len(m[2]) == 2 and dist.functional(m[1], m[2][0]):
             direct = (m[1], m[2][0], m[2][1])
-        inst = [] if direct or not ns else [(fs, [test_of(o) for o in others]) for fs, others in dist.instances(m)]
-        plan_h.append((test_of(m), [test_of(n) for n in ns], direct, inst))
+        inst = [] if direct or not ns else [(fs, [test_of(o) for o in others], _entry_groups(dist, fs, test_of))
+                                            for fs, others in dist.instances(m)]
+        sup = supply(task, m) if ns and not direct else None
+        if sup is not None:
+            supplies.setdefault(sup, _counter(task, sup))
+        plan_h.append((test_of(m), [test_of(n) for n in ns], direct, inst, sup))
     succ = Successors(task, list(formulas))
     tests = succ.tests
     index, n_init = task.index, task.n_init
@@ -218,22 +224,110 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
         plus 1 per missing need, plus its distance (a functional atom's, or its cheapest
         achiever's)."""
         succ.begin(s)
-        total, cache = 0, {}
-        for mt, nts, direct, inst in plan_h:
+        total, cache, entered = 0, {}, {}
+        reach = None
+        wanted: dict = {}          # supply -> [landmarks that spend it, of them with the need false]
+        for mt, nts, direct, inst, sup in plan_h:
             if tests[mt](s):
                 continue
             if direct is not None:
                 total += dist.distance(direct[0], direct[1], value(s, direct[0], direct[1], cache), direct[2])
                 continue
-            total += 1 + sum(1 for n in nts if not tests[n](s))
+            missing = sum(1 for n in nts if not tests[n](s))
+            total += 1 + missing
+            if sup is not None:
+                w = wanted.setdefault(sup, [0, 0])
+                w[0] += 1
+                w[1] += 1 if missing else 0
             if inst:
-                total += min(sum(dist.distance(p, o, value(s, p, o, cache), v) for p, o, v in fs) +
-                             sum(1 for k in others if not tests[k](s)) for fs, others in inst)
-        return total
+                # each instance's cost without its entries first: an entry is looked at only
+                # while the instance could still be the cheapest
+                costs, bases = [], []
+                for fs, others, groups in inst:
+                    c, moving = sum(1 for k in others if not tests[k](s)), []
+                    bases.append((c, c, None))
+                    for g in groups:
+                        d = sum(dist.distance(p, o, value(s, p, o, cache), v) for p, o, v in g[1])
+                        if d:
+                            c += d
+                            moving.append(g)
+                    costs.append((c, len(costs), moving))
+                costs.sort()
+                best = None
+                for c, _, moving in costs:
+                    if best is not None and c >= best:
+                        break
+                    for g in moving:
+                        c += entry(s, g, entered)
+                    if best is None or c < best:
+                        best = c
+                if not SHARED_MOVES:
+                    total += best
+                    continue
+                base = min(b for _, b, _ in bases)
+                total += base
+                if reach is None or best - base < reach:
+                    reach = best - base
+        for sup, (k, unmet) in wanted.items():
+            if k > 1:
+                # k landmarks each take a step of the counter; those whose need is false
+                # were counted already
+                total += max(0, k - supplies[sup](s, k) - unmet)
+        return total + (reach or 0)
+
+    def entry(s, group, entered) -> int:
+        """The false conjuncts of the cheapest way to step onto the group's values."""
+        got = entered.get(group[0])
+        if got is None:
+            got = None
+            for e in group[2]:
+                c = sum(1 for k in e if not tests[k](s))
+                if got is None or c < got:
+                    got = c
+                    if not c:
+                        break
+            got = entered[group[0]] = got or 0
+        return got
 
     def count(s) -> int:
-        return sum(1 for mt, _, _, _ in plan_h if not tests[mt](s))
+        return sum(1 for mt, *_ in plan_h if not tests[mt](s))
     return succ, h, count
+
+
+def _counter(task: LiftedTask, sup: tuple):
+    """`steps(s, k)`: how many steps down the supply's counter (lifted_landmarks.supply)
+    the best-stocked object could take in s, at most k."""
+    pred, rel, vpos = sup
+    nxt: dict = {}
+    for fact in task.static_all.get(rel, ()):
+        nxt.setdefault(fact[vpos], []).append(fact[1 - vpos])
+    n_init = task.n_init
+
+    def steps(s, k) -> int:
+        best = 0
+        for i, args in task.of_pred.get(pred, ()):
+            if (i < n_init) == (i in s):
+                continue
+            v, n = args[-1], 0
+            while n < k and len(nxt.get(v, ())) == 1:
+                v = nxt[v][0]
+                n += 1
+            best = max(best, n)
+        return best
+    return steps
+
+
+def _entry_groups(dist: Distances, fs: list, test_of) -> list:
+    """An instance's functional atoms by object: [(key, [(pred, obj, value)], [entry tests])]
+    (lifted_distances.Distances.entries: what stepping onto those values needs)."""
+    by_obj: dict = {}
+    for p, o, v in fs:
+        by_obj.setdefault(o, []).append((p, o, v))
+    out = []
+    for o, group in by_obj.items():
+        wanted = tuple(sorted((p, v) for p, _, v in group))
+        out.append(((o, wanted), group, [[test_of(c) for c in e] for e in dist.entries(o, wanted)]))
+    return out
 
 
 def _novelty(task: LiftedTask, seen: set):

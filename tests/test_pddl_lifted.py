@@ -26,7 +26,9 @@ HAND_COSTS = {"gripper-3": ("gripper-domain", 9), "blocksworld-4": ("blocksworld
               "sokoban-corridor": ("sokoban-domain", 2), "briefcase-1": ("briefcase-domain", 6),
               "lights-1": ("lights-domain", 4), "lights-2": ("lights-domain", 5),
               # tokens-1 and tokens-2: 5, derived in their comments
-              "tokens-1": ("tokens-domain", 5), "tokens-2": ("tokens-domain", 5)}
+              "tokens-1": ("tokens-domain", 5), "tokens-2": ("tokens-domain", 5),
+              # ledge-1: 4, derived in its comment
+              "ledge-1": ("ledge-domain", 4)}
 
 
 def files(problem):
@@ -220,3 +222,41 @@ def test_domain_transition_distances(tmp_path):
     assert dist.instances(("atom", "mark", ("c3",))) == [([("pos", "r", "c3")], [])]
     result = solve(dom, prob, Budget(time_limit=30))
     assert result.solved and result.plan == ["(move r c1 c2)", "(move r c2 c3)", "(put r c3)"]
+
+
+def test_stepping_onto_a_value_needs_what_the_last_step_needs():
+    """ledge: the agent at c3 on level l2 stands on a block at (c3, l1) with room at
+    (c3, l2): walking there and climbing there both need exactly that (walk keeps the
+    level, so its level is the wanted l2; climb comes from l1), and dropping there would
+    come from a level l3 that does not exist."""
+    from bcc.heuristics.lifted_distances import Distances
+    dom, prob, task = lifted("ledge-1")
+    entries = Distances(task).entries("r", (("at", "c3"), ("lvl", "l2")))
+    assert entries == [[("atom", "solid", ("c3", "l1")), ("not", ("atom", "solid", ("c3", "l2")))]]
+
+
+def test_ledge_start_estimate_counts_the_step_the_last_move_needs():
+    """The start of ledge-1, by hand: 1 for the landmark (marked c4 l2), 1 for its need
+    (an agent on level l2 beside c4), the agent's moves to its only achiever's place
+    (c1 to c3: 2, l1 to l2: 1) and 1 for the block that stepping onto (c3, l2) needs
+    (solid c3 l1): 6; one landmark is missing (a need is not counted as one)."""
+    from bcc.solvers.lifted_search import _landmark_heuristic
+    dom, prob, task = lifted("ledge-1")
+    succ, h, count = _landmark_heuristic(task, prob, False)
+    assert h(frozenset()) == 6 and count(frozenset()) == 1
+
+
+def test_a_counter_spent_by_every_achiever_is_a_supply():
+    """tokens: each place needs (has ?n) with (succ ?m ?n) and turns has n into has m:
+    a supply on `has` along `succ` (n at position 1). With has n2 the counter can be
+    stepped down twice (n2 -> n1 -> n0). Marking in ledge spends nothing."""
+    from bcc.heuristics.lifted_landmarks import supply
+    from bcc.solvers.lifted_search import _counter
+    dom, prob, task = lifted("tokens-1")
+    mark = ("exists", (("?t", frozenset({"token"})),), ("atom", "on", ("?t", "c2")))
+    sup = supply(task, mark)
+    assert sup == ("has", "succ", 1)
+    steps = _counter(task, sup)
+    assert steps(frozenset(), 5) == 2 and steps(frozenset(), 1) == 1
+    dom, prob, task = lifted("ledge-1")
+    assert supply(task, ("atom", "marked", ("c4", "l2"))) is None
