@@ -5,13 +5,25 @@ for. Here the heuristic is read off the action schemas without grounding: the mi
 landmarks (lifted_landmarks.py: the goal's conjuncts, the precondition of a goal atom's
 only achiever, and what every achiever of a landmark needs), each with a distance
 (lifted_distances.py: an agent's moves along its domain transition graphs to where the
-landmark's cheapest achiever can act). States are taken by that sum first, then by
-*novelty* (Lipovetzky and Geffner's best-first width search): w = 1 when a state makes
-true an atom no earlier state with the same number of missing landmarks did, 2 when it
-makes a new pair of atoms of one object (an agent's x and z), else 3. On the block-building
-benchmark's Easy tasks this order beat novelty first (Pickup_and_Place: 136 expansions against
-291; the others the same). Every state is queued, so the search is complete; it is not
-optimal.
+landmark's cheapest achiever can act, plus what the last step onto that place needs: a
+block to stand on). The agents' moves are counted once, to the nearest place where work
+can be done, not once per landmark: summed, a step away from a cluster of five goals
+cost five, and fetching a block from two cells away looked worse than any detour
+through a dead end. A counter that every achiever of several landmarks steps down
+("holds one T") is counted once per landmark that still needs a step of it
+(lifted_landmarks.supply); while it is short, the nearest place to step it up (break a
+block of T, pick one up) that undoes no landmark met is such a place too
+(lifted_supplies.py). (The block-building benchmark's plus shape of five blocks:
+stuck at 13 with the sum; at 3 with the moves shared, its last block wanting a count
+spent on a support; solved in 67 expansions with supplies too.) States wait in two queues,
+taken from in turn (as LAMA alternates its queues): one by that sum first, then by
+*novelty* (Lipovetzky and Geffner's best-first width search), the other by novelty
+first, then the sum. Novelty: w = 1 when a state makes true an atom no earlier state
+with the same number of missing landmarks did, 2 when it makes a new pair of atoms of
+one object (an agent's x and z), else 3. By the sum alone the search sank into a plateau
+of blocks put anywhere (each new, none closer) on the benchmark's plus shape gathered
+from the world (Collect_Build_Shape: at 6 after 40 s); by turns it found a plan in 3,615
+expansions. Every state is queued, so the search is complete; it is not optimal.
 
 Novelty is judged on the atoms an action makes true (not all of a state's atoms: a
 state can hold tens of thousands of atoms, and its parent's were judged already).
@@ -26,18 +38,19 @@ from ..pddl_io.lifted_types import TRUE, Domain, Problem
 from ..pddl_io.lifted_joins import JoinCompiler
 from ..heuristics.lifted_distances import Distances
 from ..heuristics.lifted_landmarks import landmarks, supply
+from ..heuristics.lifted_supplies import counter, refills, undoes
 from ..pddl_io.lifted_states import LiftedTask
 
 
-SHARED_MOVES = True   # the agents' moves counted once (to the nearest landmark), not once per landmark
 WIDTH = 2     # novelty judged on single atoms (1) or also on pairs of atoms of one object (2)
 
 
 class Successors:
     """`successors(s)`: [(action text, cost, next state)] of every binding of every
-    action schema whose precondition holds in s; `test(f)`: s -> does ground formula f hold."""
+    action schema whose precondition holds in s; `tests[k](s)`: does ground formula k hold;
+    `relaxed[k](s, [])`: the bindings of further preconditions (the heuristic's refills)."""
 
-    def __init__(self, task: LiftedTask, formulas: list = ()):
+    def __init__(self, task: LiftedTask, formulas: list = (), relaxed: list = ()):
         self.task = task
         dom, prob = task.dom, task.prob
         jc = JoinCompiler(task)
@@ -53,7 +66,10 @@ class Successors:
                 effects.append((e, cond))
             self.schemas.append((a, params, f"A{k}", effects))
         tests = [jc.test_function(f, {}) for f in formulas]
+        for k, (pre, params, types) in enumerate(relaxed):
+            jc.schema_function(f"R{k}", pre, params, types)
         self.ns = ns = jc.compile()
+        self.relaxed = [ns[f"R{k}"] for k in range(len(relaxed))]    # bindings of other preconditions
         self.source = jc.source
         self.memo = ns["MEMO"]
         self.last = None
@@ -150,8 +166,16 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
                                    initial_h=h0, expanded=expanded, generated=generated, **kw))
 
     closed: set = set()
-    while queue:
-        key, _, _, s = heapq.heappop(queue)
+    other: list = [] if optimal else [(1, h0, next(tie), start)]      # the same states by (novelty, h)
+    turn = 0
+    while queue or other:
+        turn += 1
+        if other and (turn & 1 or not queue):
+            w, key, _, s = heapq.heappop(other)
+        else:
+            if not queue:
+                break
+            key, _, _, s = heapq.heappop(queue)
         if s in closed or optimal and key > best_g[s]:
             continue
         closed.add(s)
@@ -182,6 +206,7 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
             ht = h(t)
             w = novelty(s, t, count(t))
             heapq.heappush(queue, (ht, w, next(tie), t))
+            heapq.heappush(other, (w, ht, next(tie), t))
     return finish(solved=False, status="no_solution", message="no plan exists: every reachable state was explored")
 
 
@@ -198,6 +223,8 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
 
     plan_h = []       # per landmark: (its test, [need tests], distance or None, [(functions, other tests)], supply)
     supplies: dict = {}   # supply (lifted_landmarks.supply) -> steps(s, k): the counter's steps left, up to k
+    fill: dict = {}       # supply -> [(relaxed join, its parameters, the mover's dropped atoms)]: its refills
+    relaxed: list = []
     for m, ns in marks:
         direct = None
         if m[0] == "atom" and len(m[2]) == 2 and dist.functional(m[1], m[2][0]):
@@ -205,11 +232,16 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
         inst = [] if direct or not ns else [(fs, [test_of(o) for o in others], _entry_groups(dist, fs, test_of))
                                             for fs, others in dist.instances(m)]
         sup = supply(task, m) if ns and not direct else None
-        if sup is not None:
-            supplies.setdefault(sup, _counter(task, sup))
+        if sup is not None and sup not in supplies:
+            supplies[sup] = counter(task, sup)
+            fill[sup] = []
+            for pre, params, types, dropped, deletes in refills(task, dist, sup):
+                fill[sup].append((len(relaxed), params, dropped, deletes))
+                relaxed.append((pre, params, types))
         plan_h.append((test_of(m), [test_of(n) for n in ns], direct, inst, sup))
-    succ = Successors(task, list(formulas))
-    tests = succ.tests
+    goal_marks = [(m, test_of(m)) for m, _ in marks]
+    succ = Successors(task, list(formulas), relaxed)
+    tests, relaxed_fns = succ.tests, succ.relaxed
     index, n_init = task.index, task.n_init
 
     def value(s, pred, obj, cache):
@@ -221,11 +253,12 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
 
     def h(s) -> int:
         """The missing landmarks (see lifted_landmarks.py, lifted_distances.py): each 1,
-        plus 1 per missing need, plus its distance (a functional atom's, or its cheapest
-        achiever's)."""
+        plus 1 per missing need, plus the false conditions of its cheapest achiever, plus
+        the steps its counter lacks; and once, the movers' distance to the nearest place
+        where work can be done (an achiever's, with what stepping there needs, or a refill's)."""
         succ.begin(s)
-        total, cache, entered = 0, {}, {}
-        reach = None
+        total, cache, entered, filled = 0, {}, {}, {}
+        near = []                  # (distance before entries, tie, entry groups): where to go next
         wanted: dict = {}          # supply -> [landmarks that spend it, of them with the need false]
         for mt, nts, direct, inst, sup in plan_h:
             if tests[mt](s):
@@ -239,41 +272,72 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
                 w = wanted.setdefault(sup, [0, 0])
                 w[0] += 1
                 w[1] += 1 if missing else 0
-            if inst:
-                # each instance's cost without its entries first: an entry is looked at only
-                # while the instance could still be the cheapest
-                costs, bases = [], []
-                for fs, others, groups in inst:
-                    c, moving = sum(1 for k in others if not tests[k](s)), []
-                    bases.append((c, c, None))
-                    for g in groups:
-                        d = sum(dist.distance(p, o, value(s, p, o, cache), v) for p, o, v in g[1])
-                        if d:
-                            c += d
-                            moving.append(g)
-                    costs.append((c, len(costs), moving))
-                costs.sort()
-                best = None
-                for c, _, moving in costs:
-                    if best is not None and c >= best:
-                        break
-                    for g in moving:
-                        c += entry(s, g, entered)
-                    if best is None or c < best:
-                        best = c
-                if not SHARED_MOVES:
-                    total += best
-                    continue
-                base = min(b for _, b, _ in bases)
-                total += base
-                if reach is None or best - base < reach:
-                    reach = best - base
+            if not inst:
+                continue
+            rows = []
+            for fs, others, groups in inst:
+                d, moving = 0, []
+                for g in groups:
+                    gd = sum(dist.distance(p, o, value(s, p, o, cache), v) for p, o, v in g[1])
+                    if gd:
+                        d += gd
+                        moving.append(g)
+                rows.append((sum(1 for k in others if not tests[k](s)), d, moving))
+            base = min(b for b, _, _ in rows)
+            total += base
+            r = refill(s, sup, cache, filled) if missing and sup is not None else None
+            if r is not None:      # it lacks what it spends: the place to go is where to get more
+                near.append((r, len(near), ()))
+                continue
+            for b, d, moving in rows:
+                near.append((b - base + d, len(near), moving))
         for sup, (k, unmet) in wanted.items():
             if k > 1:
                 # k landmarks each take a step of the counter; those whose need is false
                 # were counted already
-                total += max(0, k - supplies[sup](s, k) - unmet)
+                short = max(0, k - supplies[sup](s, k) - unmet)
+                total += short
+                r = refill(s, sup, cache, filled) if short else None
+                if r is not None:
+                    near.append((r, len(near), ()))
+        # the nearest place, its entries looked at only while it could still be the nearest
+        near.sort()
+        reach = None
+        for c, _, moving in near:
+            if reach is not None and c >= reach:
+                break
+            for g in moving:
+                c += entry(s, g, entered)
+            if reach is None or c < reach:
+                reach = c
         return total + (reach or 0)
+
+    def refill(s, sup, cache, filled):
+        """The mover's distance to the nearest place where the supply's counter can be
+        stepped up in s (lifted_supplies.refills), or None."""
+        if sup in filled:
+            return filled[sup]
+        found = []
+        for k, params, dropped, deletes in fill.get(sup, ()):
+            for binding in relaxed_fns[k](s, []):
+                env = dict(zip(params, binding))
+                d = 0
+                for p, o, v in dropped:
+                    o = env.get(o, o)
+                    d += dist.distance(p, o, value(s, p, o, cache), env.get(v, v))
+                found.append((d, len(found), env, deletes))
+        found.sort()
+        met = None
+        best = None
+        for d, _, env, deletes in found:          # the nearest that undoes no landmark met
+            if met is None:
+                met = [m for m, mt in goal_marks if tests[mt](s)]
+            deleted = [(p, tuple(env.get(t, t) for t in args)) for p, args in deletes]
+            if not any(undoes(task, s, m, deleted) for m in met):
+                best = d
+                break
+        filled[sup] = best
+        return best
 
     def entry(s, group, entered) -> int:
         """The false conjuncts of the cheapest way to step onto the group's values."""
@@ -292,29 +356,6 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
     def count(s) -> int:
         return sum(1 for mt, *_ in plan_h if not tests[mt](s))
     return succ, h, count
-
-
-def _counter(task: LiftedTask, sup: tuple):
-    """`steps(s, k)`: how many steps down the supply's counter (lifted_landmarks.supply)
-    the best-stocked object could take in s, at most k."""
-    pred, rel, vpos = sup
-    nxt: dict = {}
-    for fact in task.static_all.get(rel, ()):
-        nxt.setdefault(fact[vpos], []).append(fact[1 - vpos])
-    n_init = task.n_init
-
-    def steps(s, k) -> int:
-        best = 0
-        for i, args in task.of_pred.get(pred, ()):
-            if (i < n_init) == (i in s):
-                continue
-            v, n = args[-1], 0
-            while n < k and len(nxt.get(v, ())) == 1:
-                v = nxt[v][0]
-                n += 1
-            best = max(best, n)
-        return best
-    return steps
 
 
 def _entry_groups(dist: Distances, fs: list, test_of) -> list:

@@ -28,7 +28,9 @@ HAND_COSTS = {"gripper-3": ("gripper-domain", 9), "blocksworld-4": ("blocksworld
               # tokens-1 and tokens-2: 5, derived in their comments
               "tokens-1": ("tokens-domain", 5), "tokens-2": ("tokens-domain", 5),
               # ledge-1: 4, derived in its comment
-              "ledge-1": ("ledge-domain", 4)}
+              "ledge-1": ("ledge-domain", 4),
+              # stock-1: 11, derived in its comment
+              "stock-1": ("stock-domain", 11)}
 
 
 def files(problem):
@@ -251,7 +253,7 @@ def test_a_counter_spent_by_every_achiever_is_a_supply():
     a supply on `has` along `succ` (n at position 1). With has n2 the counter can be
     stepped down twice (n2 -> n1 -> n0). Marking in ledge spends nothing."""
     from bcc.heuristics.lifted_landmarks import supply
-    from bcc.solvers.lifted_search import _counter
+    from bcc.heuristics.lifted_supplies import counter as _counter
     dom, prob, task = lifted("tokens-1")
     mark = ("exists", (("?t", frozenset({"token"})),), ("atom", "on", ("?t", "c2")))
     sup = supply(task, mark)
@@ -260,3 +262,24 @@ def test_a_counter_spent_by_every_achiever_is_a_supply():
     assert steps(frozenset(), 5) == 2 and steps(frozenset(), 1) == 1
     dom, prob, task = lifted("ledge-1")
     assert supply(task, ("atom", "marked", ("c4", "l2"))) is None
+
+
+def test_a_refill_is_a_schema_stepping_the_counter_up_with_the_movers_place_left_out():
+    """stock: build spends `has` along `succ`; dig steps it up (has n -> has m with
+    succ n m). Its precondition without the agent's own place (at ?a ?c) binds in a state
+    to each heap; the dropped atom says where the agent must stand. A refill that takes
+    apart a landmark already met is no refill (`undoes`): lifting the token that is the
+    only one on c2 undoes "a token on c2", lifting one from c3 does not."""
+    from bcc.heuristics.lifted_distances import Distances
+    from bcc.heuristics.lifted_supplies import refills, undoes
+    dom, prob, task = lifted("stock-1")
+    got = refills(task, Distances(task), ("has", "succ", 1))
+    assert len(got) == 1
+    pre, params, types, dropped, deletes = got[0]
+    assert params == ("?a", "?c", "?n", "?m") and dropped == [("at", "?a", "?c")]
+    assert ("atom", "at", ("?a", "?c")) not in pre[1] and ("atom", "heap", ("?c",)) in pre[1]
+    dom, prob, task = lifted("tokens-1")
+    s = frozenset({task.intern(("on", ("t1", "c2"))), task.intern(("placed", ("t1",)))})
+    mark = ("exists", (("?t", frozenset({"token"})),), ("atom", "on", ("?t", "c2")))
+    assert undoes(task, s, mark, [("on", ("t1", "c2"))])
+    assert not undoes(task, s, mark, [("on", ("t1", "c3"))])
