@@ -109,9 +109,10 @@ def supply(task: LiftedTask, mark) -> tuple | None:
     """How a landmark's achievers spend what they need, when each one takes a step down a
     counter: (pred, binary static relation, the position of v in it) such that every
     achiever needs `pred(..., v)` and `rel(w, v)` (or `rel(v, w)`, the same for all) and
-    replaces `pred(..., v)` by `pred(..., w)` (the same other arguments). Then k landmarks that share the need are not all met by
-    one step left on the counter ("holds one T" for five blocks of T); the search counts
-    the steps that are missing (lifted_search.py). None when the achievers differ."""
+    replaces `pred(..., v)` by `pred(..., w)` (the same other arguments). Then k
+    landmarks that share the need are not all met by one step left on the counter
+    ("holds one T" for five blocks of T); the search counts the steps that are missing
+    (lifted_search.py). None when the achievers differ."""
     found = None
     for a, env, types in _achievers(task, mark):
         pre = conjuncts(a.pre)

@@ -9,8 +9,9 @@ picking one up), each with its precondition *relaxed*: the movers' own functiona
 atoms (an agent's x, y and z: binary atoms of a functional predicate on an object of a
 type with few objects) are dropped, so that a join in the state finds every place a
 refill could happen, and the dropped atoms, bound, say where the mover must go. The
-search takes the nearest such place as where to go next while the counter is short
-(lifted_search.py), but not one that would undo a landmark already met (`undoes`).
+search goes to the nearest such place, and on to where the counter is spent, while the
+counter is short (lifted_search.py); not to one that would undo a landmark already met
+(`undoes`).
 """
 from __future__ import annotations
 

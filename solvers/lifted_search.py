@@ -3,27 +3,31 @@
 Why this search: a relaxed-plan heuristic needs the grounding that the task is too big
 for. Here the heuristic is read off the action schemas without grounding: the missing
 landmarks (lifted_landmarks.py: the goal's conjuncts, the precondition of a goal atom's
-only achiever, and what every achiever of a landmark needs), each with a distance
-(lifted_distances.py: an agent's moves along its domain transition graphs to where the
-landmark's cheapest achiever can act, plus what the last step onto that place needs: a
-block to stand on). The agents' moves are counted once, to the nearest place where work
-can be done, not once per landmark: summed, a step away from a cluster of five goals
-cost five, and fetching a block from two cells away looked worse than any detour
-through a dead end. A counter that every achiever of several landmarks steps down
-("holds one T") is counted once per landmark that still needs a step of it
-(lifted_landmarks.supply); while it is short, the nearest place to step it up (break a
-block of T, pick one up) that undoes no landmark met is such a place too
-(lifted_supplies.py). (The block-building benchmark's plus shape of five blocks:
-stuck at 13 with the sum; at 3 with the moves shared, its last block wanting a count
-spent on a support; solved in 67 expansions with supplies too.) States wait in two queues,
-taken from in turn (as LAMA alternates its queues): one by that sum first, then by
-*novelty* (Lipovetzky and Geffner's best-first width search), the other by novelty
-first, then the sum. Novelty: w = 1 when a state makes true an atom no earlier state
-with the same number of missing landmarks did, 2 when it makes a new pair of atoms of
-one object (an agent's x and z), else 3. By the sum alone the search sank into a plateau
-of blocks put anywhere (each new, none closer) on the benchmark's plus shape gathered
-from the world (Collect_Build_Shape: at 6 after 40 s); by turns it found a plan in 3,615
-expansions. Every state is queued, so the search is complete; it is not optimal.
+only achiever, and what every achiever of a landmark needs), each with the false
+conditions of its cheapest achiever, and once, the movers' distance to the nearest
+place where work can be done (lifted_distances.py: along domain transition graphs to
+where an achiever can act, plus what the last step onto that place needs: a block to
+stand on). Moves are counted once, not once per landmark: summed, a step away from a
+cluster of five goals cost five, and fetching a block from two cells away looked worse
+than any detour. A counter that every achiever of several landmarks steps down ("holds
+one T") costs the steps it lacks (lifted_landmarks.supply); while it is short, or a
+need is unmet, the way to the nearest place to step it up (break a block of T, pick one
+up) that undoes no landmark met, and on from there to an achiever's place, is a way to
+work too (lifted_supplies.py): without the way on, fetching the last block looked worse
+than staying beside the goal, and putting a block down to take it back looked like
+progress. (The block-building benchmark's plus shape of five blocks: stuck at 13 with
+the sum; at 3 with the moves shared, its last block wanting a count spent on a support;
+solved with supplies too.)
+
+States wait in two queues, taken from in turn (as LAMA alternates its queues): one by
+that estimate first, then by *novelty* (Lipovetzky and Geffner's best-first width
+search), the other by novelty first, then the estimate. Novelty: w = 1 when a state
+makes true an atom no earlier state with the same number of missing landmarks did, 2
+when it makes a new pair of atoms of one object (an agent's x and z), else 3. By the
+estimate alone the search sank into plateaus of blocks put anywhere (each new, none
+closer): the plus shape gathered from the world (Collect_Build_Shape) and the cross
+(Build_Cross) were not solved in 60 s; by turns in 1,854 and 2,185 expansions. Every
+state is queued, so the search is complete; it is not optimal.
 
 Novelty is judged on the atoms an action makes true (not all of a state's atoms: a
 state can hold tens of thousands of atoms, and its parent's were judged already).
@@ -170,7 +174,7 @@ def solve(dom: Domain, prob: Problem, budget: Budget, progress=None, optimal: bo
     turn = 0
     while queue or other:
         turn += 1
-        if other and (turn & 1 or not queue):
+        if other and (not queue or turn & 1):
             w, key, _, s = heapq.heappop(other)
         else:
             if not queue:
@@ -260,6 +264,7 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
         total, cache, entered, filled = 0, {}, {}, {}
         near = []                  # (distance before entries, tie, entry groups): where to go next
         wanted: dict = {}          # supply -> [landmarks that spend it, of them with the need false]
+        spending: dict = {}        # supply -> [(instance rows, base)] of the landmarks that spend it
         for mt, nts, direct, inst, sup in plan_h:
             if tests[mt](s):
                 continue
@@ -282,14 +287,16 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
                     if gd:
                         d += gd
                         moving.append(g)
-                rows.append((sum(1 for k in others if not tests[k](s)), d, moving))
-            base = min(b for b, _, _ in rows)
+                rows.append((sum(1 for k in others if not tests[k](s)), d, moving, groups))
+            base = min(row[0] for row in rows)
             total += base
+            if sup is not None:
+                spending.setdefault(sup, []).append((rows, base))
             r = refill(s, sup, cache, filled) if missing and sup is not None else None
-            if r is not None:      # it lacks what it spends: the place to go is where to get more
-                near.append((r, len(near), ()))
+            if r is not None:      # it lacks what it spends: first where to get more, then here
+                near.append((r[0] + carry(s, r[1], [(rows, base)], cache), len(near), ()))
                 continue
-            for b, d, moving in rows:
+            for b, d, moving, _ in rows:
                 near.append((b - base + d, len(near), moving))
         for sup, (k, unmet) in wanted.items():
             if k > 1:
@@ -299,7 +306,7 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
                 total += short
                 r = refill(s, sup, cache, filled) if short else None
                 if r is not None:
-                    near.append((r, len(near), ()))
+                    near.append((r[0] + carry(s, r[1], spending.get(sup, ()), cache), len(near), ()))
         # the nearest place, its entries looked at only while it could still be the nearest
         near.sort()
         reach = None
@@ -312,9 +319,23 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
                 reach = c
         return total + (reach or 0)
 
+    def carry(s, pos: dict, landmarks_rows, cache) -> int:
+        """From the place `pos` ((pred, object) -> value), the moves to the nearest
+        achiever's place of the given landmarks, plus its other false conditions."""
+        best = None
+        for rows, base in landmarks_rows:
+            for b, _, _, groups in rows:
+                c = b - base
+                for g in groups:
+                    for p, o, v in g[1]:
+                        c += dist.distance(p, o, pos.get((p, o)) or value(s, p, o, cache), v)
+                if best is None or c < best:
+                    best = c
+        return best or 0
+
     def refill(s, sup, cache, filled):
-        """The mover's distance to the nearest place where the supply's counter can be
-        stepped up in s (lifted_supplies.refills), or None."""
+        """(the movers' distance, their place there) of the nearest place where the
+        supply's counter can be stepped up in s (lifted_supplies.refills), or None."""
         if sup in filled:
             return filled[sup]
         found = []
@@ -325,16 +346,16 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
                 for p, o, v in dropped:
                     o = env.get(o, o)
                     d += dist.distance(p, o, value(s, p, o, cache), env.get(v, v))
-                found.append((d, len(found), env, deletes))
+                found.append((d, len(found), env, deletes, dropped))
         found.sort()
         met = None
         best = None
-        for d, _, env, deletes in found:          # the nearest that undoes no landmark met
+        for d, _, env, deletes, dropped in found:          # the nearest that undoes no landmark met
             if met is None:
                 met = [m for m, mt in goal_marks if tests[mt](s)]
             deleted = [(p, tuple(env.get(t, t) for t in args)) for p, args in deletes]
             if not any(undoes(task, s, m, deleted) for m in met):
-                best = d
+                best = (d, {(p, env.get(o, o)): env.get(v, v) for p, o, v in dropped})
                 break
         filled[sup] = best
         return best
