@@ -282,7 +282,14 @@ def candidates(row: dict) -> list[str]:
 def train(rows: list[dict]):
     """A grounding model trained on corpus rows (negatives: each row's candidates from its start)."""
     from .learn import train as train_rows
-    return train_rows([r | {"dungeon": resolve(r["dungeon"])} for r in rows], candidates_of=candidates)
+    return train_rows([r | {"dungeon": resolve(r["dungeon"])} for r in rows], candidates_of=candidates,
+                      scene_of_row=scene)
+
+
+def scene(row: dict):
+    """The scene of a corpus row from its start (route.py), or None in a dungeon without rooms."""
+    from .route import scene_of
+    return scene_of(*start_state(row))
 
 
 def evaluate(model, rows: list[dict]) -> dict:

@@ -58,7 +58,11 @@ def rank(translation, space: TaskSpace, start: bytes, command: str, unseen_names
         return Interpretation(command, None, [], unknown,
                               f"the model never saw {', '.join(map(repr, unseen))}, which this dungeon's tasks name: "
                               "train it on commands for this dungeon (bcc train --pairs FILE)")
-    scores = translation.log_posterior(command, tasks)
+    if getattr(translation, "reads_scenes", False):
+        from .route import scene_of
+        scores = translation.log_posterior(command, tasks, scene_of(space, start))
+    else:
+        scores = translation.log_posterior(command, tasks)
     chance = -math.log(len(tasks))
     posterior = sorted(((t, math.exp(s), s > chance + 1e-9 or len(tasks) == 1) for t, s in zip(tasks, scores)),
                        key=lambda x: (-x[1], x[0]))

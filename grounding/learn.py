@@ -61,21 +61,25 @@ def train_ibm2(rows) -> tuple[IBMModel2, float]:
     return model, time.perf_counter() - t0
 
 
-def train(rows, candidates_of=None) -> tuple[Ensemble, float]:
+def train(rows, candidates_of=None, scene_of_row=None) -> tuple[Ensemble, float]:
     """The grounding model (log-linear models voting, ensemble.py) trained on rows with `command`, `dungeon` and `explanations`
     ([{task, weight}]), and the training time in seconds. A row's negatives are its
-    dungeon's candidate tasks from the start, or `candidates_of(row)`."""
+    dungeon's candidate tasks from the start, or `candidates_of(row)`; its scene (the rooms
+    and where things are, for the member that reads routes) is its dungeon's from the
+    start, or `scene_of_row(row)`."""
+    from .route import scene_of
     t0 = time.perf_counter()
-    examples = []
+    examples, scenes = [], []
     for r in rows:
         target = {x["task"]: float(x["weight"]) for x in r["explanations"] if float(x["weight"]) > 0}
         if not target or not r["command"].strip():
             continue
         cands = candidates_of(r) if candidates_of else candidates(r["dungeon"])
         examples.append((r["command"], cands + [t for t in target if t not in cands], target))
+        scenes.append(scene_of_row(r) if scene_of_row else scene_of(space_for(r["dungeon"])))
     if not examples:
         raise BccError("no pair to train on")
-    model = Ensemble.train(examples)
+    model = Ensemble.train(examples, scenes=scenes)
     return model, time.perf_counter() - t0
 
 

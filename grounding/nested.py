@@ -21,9 +21,10 @@ import numpy as np
 from scipy.optimize import minimize
 
 from .bayes import NaiveBayes
-from .ensemble import Ensemble, vote
+from .ensemble import Ensemble, member_scores, train_member, vote
 from .loglinear import LogLinear
 from .network import Network
+from .route_model import RouteModel
 
 INNER = 3
 # the members a configuration may vote with: (name, model class, training options)
@@ -32,41 +33,44 @@ POOL = (("words", LogLinear, {"skips": 0}),
         ("whole", LogLinear, {"skips": 0, "factored": False}),
         ("bayes", NaiveBayes, {}),
         ("network", Network, {}),
-        ("letters", LogLinear, {"skips": 0, "factored": False, "chars": 4}))
+        ("letters", LogLinear, {"skips": 0, "factored": False, "chars": 4}),
+        ("route", RouteModel, {}))
 STACKED = "stacked"
 # (name, one vote per POOL member): at most about a dozen, so that luck on the inner folds
 # has few tries; the shipped votes first (ensemble.MEMBERS). STACKED has no fixed votes:
 # they are fitted to the inner held-out scores (stack_votes).
-CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5, 0)),
-           ("no-bayes", (1, 1, 1, 0, 1.5, 0)),
-           ("network-3", (1, 1, 1, 0.2, 3, 0)),
-           ("network-0.75", (1, 1, 1, 0.2, 0.75, 0)),
-           ("network-alone", (0, 0, 0, 0, 1, 0)),
-           ("whole-2", (1, 1, 2, 0.2, 1.5, 0)),
-           ("factored", (1, 1, 0, 0.2, 1.5, 0)),
-           ("bayes-0.5", (1, 1, 1, 0.5, 1.5, 0)),
-           ("no-skips", (1, 0, 1, 0.2, 1.5, 0)),
-           ("letters", (1, 1, 1, 0.2, 1.5, 1)),
-           ("letters-network-3", (1, 1, 1, 0.2, 3, 1)),
+CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5, 0, 1)),
+           ("no-route", (1, 1, 1, 0.2, 1.5, 0, 0)),
+           ("no-bayes", (1, 1, 1, 0, 1.5, 0, 1)),
+           ("network-3", (1, 1, 1, 0.2, 3, 0, 1)),
+           ("route-0.5", (1, 1, 1, 0.2, 1.5, 0, 0.5)),
+           ("route-2", (1, 1, 1, 0.2, 1.5, 0, 2)),
+           ("whole-2", (1, 1, 2, 0.2, 1.5, 0, 1)),
+           ("factored", (1, 1, 0, 0.2, 1.5, 0, 1)),
+           ("bayes-0.5", (1, 1, 1, 0.5, 1.5, 0, 1)),
+           ("letters", (1, 1, 1, 0.2, 1.5, 1, 1)),
+           ("network-3-no-route", (1, 1, 1, 0.2, 3, 0, 0)),
            (STACKED, None))
 RIDGE = 1e-3       # penalty on the squared stacked votes: keeps them finite when members agree
 
 
-def choose(examples: list, rows_of, splits) -> tuple[str, dict, tuple]:
+def choose(examples: list, rows_of, splits, scenes: list | None = None) -> tuple[str, dict, tuple]:
     """(the name of the configuration right most often over the inner `splits`, {name:
     inner accuracy}, its votes). `examples[k]` is training pair k as (command, candidates,
     {task: weight}); `splits` are (training indices, held-out indices); `rows_of(k)` is
     pair k's correct task text, the one a prediction is checked against. The stacked
     votes are judged by cross-fitting: on each split's held-out commands, the votes
-    fitted to the other splits' held-out commands; chosen, they are fitted to all."""
+    fitted to the other splits' held-out commands; chosen, they are fitted to all.
+    `scenes[k]` is pair k's scene for the member that reads routes (route.Scene, or None)."""
     held = []                 # per split: [(scores per member, knows per member, index of the truth)]
     for train_ix, test_ix in splits:
-        members = [kind.train([examples[k] for k in train_ix], **options) for _, kind, options in POOL]
+        members = [train_member(kind, [examples[k] for k in train_ix], options,
+                                [scenes[k] for k in train_ix] if scenes else None) for _, kind, options in POOL]
         part = []
         for k in test_ix:
             command, candidates, _ = examples[k]
-            knows = [getattr(m, "knows", lambda _: True)(candidates) for m in members]
-            scores = [np.asarray(m.log_posterior(command, candidates)) for m in members]
+            scores, knows = member_scores(members, (1,) * len(POOL), command, candidates,
+                                          scenes[k] if scenes else None)
             truth = rows_of(k)
             part.append((scores, knows, candidates.index(truth) if truth in candidates else -1))
         held.append(part)
@@ -97,7 +101,8 @@ def stack_votes(records: list) -> tuple:
         return (1.0,) * m
     by_size: dict = {}
     for scores, knows, truth in records:
-        stack = np.array([s if k else np.zeros_like(s) for s, k in zip(scores, knows)])
+        size = len(next(s for s in scores if s is not None))
+        stack = np.array([s if k and s is not None else np.zeros(size) for s, k in zip(scores, knows)])
         by_size.setdefault(stack.shape[1], []).append((stack, truth))
     blocks = [(np.array([s for s, _ in group]), np.array([t for _, t in group])) for group in by_size.values()]
 
@@ -118,8 +123,9 @@ def stack_votes(records: list) -> tuple:
     return tuple(float(x) for x in w) if w.sum() > 0 else (1.0,) * m
 
 
-def train(examples: list, weights) -> Ensemble:
+def train(examples: list, weights, scenes: list | None = None) -> Ensemble:
     """The ensemble voting with `weights` (one per POOL member, e.g. a configuration's or
-    the stacked ones): the members it gives a vote, trained on `examples`."""
+    the stacked ones): the members it gives a vote, trained on `examples` (and their
+    `scenes`, for the member that reads routes)."""
     members = [(kind, options, w) for (_, kind, options), w in zip(POOL, weights) if w > 0]
-    return Ensemble.train(examples, members)
+    return Ensemble.train(examples, members, scenes)

@@ -132,9 +132,17 @@ def examples(rows: list[dict], mode: str) -> list:
     return out
 
 
+def scenes(rows: list[dict]) -> list:
+    """Each pair's scene (its dungeon's rooms and where things start: route.py), or None
+    for a dungeon without rooms."""
+    from .learn import space_for
+    from .route import scene_of
+    return [scene_of(space_for(r["dungeon"])) for r in rows]
+
+
 def train(rows: list[dict], mode: str = "tasks"):
     from .ensemble import Ensemble
-    return Ensemble.train(examples(rows, mode))
+    return Ensemble.train(examples(rows, mode), scenes=scenes(rows))
 
 
 def train_nested(rows: list[dict], mode: str = "tasks", seed: int = 0):
@@ -144,16 +152,18 @@ def train_nested(rows: list[dict], mode: str = "tasks", seed: int = 0):
     from . import nested
     train_examples = examples(rows, mode)
     inner = folds(list(range(len(rows))), nested.INNER, seed)
-    name, accuracy, weights = nested.choose(train_examples, lambda k: rows[k]["task"], inner)
-    return nested.train(train_examples, weights), name, accuracy, list(weights)
+    where = scenes(rows)
+    name, accuracy, weights = nested.choose(train_examples, lambda k: rows[k]["task"], inner, where)
+    return nested.train(train_examples, weights, where), name, accuracy, list(weights)
 
 
 def predict(model, rows: list[dict]) -> list[str]:
     from .learn import candidates
     out = []
-    for r in rows:
+    for r, where in zip(rows, scenes(rows)):
         cands = candidates(r["dungeon"])
-        scores = model.log_posterior(r["command"], cands)
+        scores = model.log_posterior(r["command"], cands, where) if getattr(model, "reads_scenes", False) \
+            else model.log_posterior(r["command"], cands)
         out.append(cands[max(range(len(cands)), key=scores.__getitem__)])
     return out
 
