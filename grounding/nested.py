@@ -94,7 +94,8 @@ def stack_votes(records: list) -> tuple:
     """Votes (one per POOL member, non-negative) that maximise the log-probability of the
     right task under the vote of held-out scores `records` [(scores per member, knows per
     member, index of the truth)], with a small ridge; a member that does not know a
-    record's tasks adds nothing to it. All zero (no member helps): equal votes."""
+    record's tasks adds nothing to it. All zero for the members that read words (no
+    member helps, or only the route reader, which abstains on most commands): equal votes."""
     records = [r for r in records if r[2] >= 0]
     m = len(POOL)
     if not records:
@@ -120,7 +121,10 @@ def stack_votes(records: list) -> tuple:
         return loss / n + RIDGE * float(w @ w), grad / n + 2 * RIDGE * w
     fit = minimize(value_and_gradient, np.ones(m), jac=True, method="L-BFGS-B", bounds=[(0, None)] * m)
     w = np.round(np.maximum(fit.x, 0.0), 4)
-    return tuple(float(x) for x in w) if w.sum() > 0 else (1.0,) * m
+    reads_words = [k for k, (_, kind, _) in enumerate(POOL) if not getattr(kind, "reads_world", False)]
+    if not any(w[k] > 0 for k in reads_words):     # an ensemble needs a member that reads words
+        return (1.0,) * m
+    return tuple(float(x) for x in w)
 
 
 def train(examples: list, weights, scenes: list | None = None) -> Ensemble:

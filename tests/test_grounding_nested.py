@@ -85,6 +85,11 @@ def test_stack_votes_weigh_the_informative_member_and_fall_back_to_equal_votes(m
     w = nested.stack_votes(records)
     assert w[0] > 0.1 and w[1] == pytest.approx(0.0, abs=1e-3)
     assert nested.stack_votes([]) == (1.0, 1.0)                                  # nothing to fit
+    # only a member that reads routes helps: an ensemble needs one that reads words, so equal votes
+    from bcc.grounding.route_model import RouteModel
+    monkeypatch.setattr(nested, "POOL", (("a", RouteModel, {}), ("b", None, {})))
+    assert nested.stack_votes(records) == (1.0, 1.0)
+    monkeypatch.setattr(nested, "POOL", (("a", None, {}), ("b", None, {})))
     assert nested.stack_votes([(r[0], r[1], -1) for r in records]) == (1.0, 1.0)  # no truth among the candidates
 
 
