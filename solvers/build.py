@@ -46,7 +46,7 @@ def _distance(a, b) -> int:
 
 
 class _Builder:
-    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True):
+    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True, supports=True):
         self.model, self.cells, self.meter, self.budget = model, cells, meter, budget
         self.read = CellReader(model)
         self.succ = model.search_successors()
@@ -76,6 +76,8 @@ class _Builder:
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
         self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
+        self.supports = supports   # plan supports at the start (a try may go without: build_finish.py)
+        self.planned = 0      # how many cells of planned supports joined the atoms
         if self.rng:
             self.rng.shuffle(self.walkers)
         # actions that clear a cell without moving: a gathering walk may use them when blocked in
@@ -469,10 +471,13 @@ class _Builder:
     def _plan_supports(self, start):
         """Serialise planned supports (scaffold.planned_supports) with the goal's atoms:
         they join `cells` (a copy: the goal and its lower bound stay as they are)."""
+        if not self.supports:
+            return
         todo = {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
         extra = planned_supports(self, start, todo, support_levels(self.cells, self.read, start))
         if not extra:
             return
+        self.planned = len(extra)
         self.cells = dataclasses.replace(self.cells, atoms=[*self.cells.atoms, *extra.items()])
         for pos, v in extra.items():
             for a in self.cells.achievers.get(v, ()):
@@ -558,6 +563,7 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
         result = get_solver("gbfs")(model, budget, progress)
         result.solver = NAME
         return result
-    run = serialise(model, lambda seed, keep, try_meter: _Builder(model, cells, try_meter, budget, local_limit, seed, keep),
+    run = serialise(model, lambda seed, keep, supports, try_meter: _Builder(model, cells, try_meter, budget, local_limit,
+                                                                            seed, keep, supports),
                     meter, budget)
     return finish(model, budget, meter, run, improve, progress)

@@ -5,12 +5,16 @@ short of the goal, and the shorter plan made of what it found.
   near places or atoms it takes first can decide whether it strands itself (the last
   cell walled in by scaffolding). When a try stops short of the goal, another one starts
   from the start, while the budget lasts, at most len(TRIES) in all; the try that reached
-  the goal, or else the one that left the fewest atoms, is kept. The first keeps what the
-  pending atoms take (no search spends it, on scaffolding say: a world holding just the
-  blocks its top needs); the second does not (a structure whose scaffolds must borrow the
-  blocks it is made of, and give them back); the others keep it, with other ties (their
-  walks' action order shuffled by a seed). Each try but the last may take half the time
-  left: one way that grinds cannot starve the other.
+  the goal, or else the one that left the fewest atoms, is kept. The first plans the
+  supports of atoms that rest on nothing the goal builds (solvers/scaffold.py; columns
+  inside what the goal encloses must rise early), the second makes them when their atom
+  comes (an open structure whose blocks are needed to climb); both keep what the pending
+  atoms take (no search spends it, on scaffolding say: a world holding just the blocks
+  its top needs); the third does not (a structure whose scaffolds must borrow the blocks
+  it is made of, and give them back); the others keep it, with other ties (their walks'
+  action order shuffled by a seed). A try that would repeat an earlier one (no supports
+  to plan) is skipped. Each try but the last may take half the time left: one way that
+  grinds cannot starve the other.
 - **The fallback rule** (`search_may_help`, the one place of it). gbfs gets what is left
   of the budget from the state reached only where a search may help: the goal has a
   conjunct other than cell atoms and amounts to gather (which the builder does not
@@ -29,7 +33,8 @@ from .base import Budget, Result, budget_result
 from .shorten import eliminate
 
 NAME = "build"
-TRIES = ((0, True), (0, False), (1, True), (2, True), (3, True))   # (seed of the ties, keep) of each try
+TRIES = ((0, True, True), (0, True, False), (0, False, False), (1, True, False), (2, True, False), (3, True, False))
+# (seed of the ties, keep, plan supports) of each try
 FALLBACK_UP_TO = 3      # atoms left (and no amount short) for which the gbfs fallback still runs
 SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_STATES = 100_000
@@ -99,14 +104,18 @@ def serialise(model, make_builder, meter, budget: Budget) -> Run:
     one that left the fewest atoms. Its stats count every try."""
     from ..heuristics.goal_cells import lower_bound
     best, stats = None, dict(expanded=0, generated=0, stored=0)
-    for k, (seed, keep) in enumerate(TRIES):
+    done = set()     # (seed, keep, planned any supports) of the tries run
+    for k, (seed, keep, supports) in enumerate(TRIES):
+        if (seed, keep, False) in done and not supports:
+            continue
         until = None
         if budget.time_limit is not None and k < len(TRIES) - 1:
             until = meter.elapsed() + max(0.0, budget.time_limit - meter.elapsed()) / 2
-        builder = make_builder(seed, keep, _TryMeter(meter, until))
+        builder = make_builder(seed, keep, supports, _TryMeter(meter, until))
         if best is None:
             bound = lower_bound(builder.cells, model, model.initial, builder.read)
         plan, state, why = builder.run(model.initial)
+        done.add((seed, keep, bool(builder.planned)))
         if why == TRY_SPENT:       # this try's share is gone: the next one starts
             why = None
         stats = dict(expanded=stats["expanded"] + builder.expanded, generated=stats["generated"] + builder.generated,
