@@ -125,8 +125,11 @@ def steps(command: str, world: World) -> list[tuple[set, list]]:
     out, verbs, mentions = [], set(), []
     named_thing = False
 
+    earlier = []      # the last mention of the steps before
+
     def close():
-        nonlocal verbs, mentions
+        nonlocal verbs, mentions, earlier
+        earlier = mentions[-1:] or earlier
         if verbs or mentions:
             out.append((verbs, mentions))
         verbs, mentions = set(), []
@@ -162,10 +165,10 @@ def steps(command: str, world: World) -> list[tuple[set, list]]:
             mentions.append(_Mention("room", "named", named[-1], locates=_locates(toks, i, mentions, lex)))
             i = j
             continue
-        if t in lex["other"] and mentions_so_far(out, mentions) and not any(
+        if t in lex["other"] and (mentions or earlier) and not any(
                 toks[k] in lex["door"] or toks[k] in lex["room"] or toks[k] in room_of_word or toks[k] in lex["then"]
                 for k in range(i + 1, min(n, i + 3))):
-            last = mentions_so_far(out, mentions)[-1]    # "through the first door, then the second"
+            last = (mentions or earlier)[-1]    # "through the first door, then the second"
             if last.kind in ("door", "room"):
                 mentions.append(_Mention(last.kind, "other", None, last.through))
                 i += 1
@@ -194,10 +197,6 @@ def steps(command: str, world: World) -> list[tuple[set, list]]:
         i += 1
     close()
     return out
-
-
-def mentions_so_far(out: list, mentions: list) -> list:
-    return [m for _, ms in out for m in ms] + mentions
 
 
 def _handled(toks: list, i: int, lex: dict, world: World) -> bool:

@@ -43,9 +43,12 @@ class World:
     neighbours: dict = field(default_factory=dict)   # room -> {room: [door indices] ([] : open)}
     distance: dict = field(default_factory=dict)     # room -> walk steps from the start position to it
 
-    def words(self) -> set:
+    def words(self) -> frozenset:
         """Every word that names something of this world (a room or a thing)."""
-        return {w for ws in self.rooms.values() for w in ws} | {w for ws, _ in self.things.values() for w in ws}
+        if not hasattr(self, "_words"):
+            self._words = frozenset({w for ws in self.rooms.values() for w in ws} |
+                                    {w for ws, _ in self.things.values() for w in ws})
+        return self._words
 
     def doors_of(self, room: str) -> list:
         return [d for d in self.doors if room in d.rooms]
