@@ -162,7 +162,8 @@ def steps(command: str, world: World) -> list[tuple[set, list]]:
             if j < n and toks[j] in thing_of_word:   # "the red chair": a thing, not a room
                 i += 1
                 continue
-            mentions.append(_Mention("room", "named", named[-1], locates=_locates(toks, i, mentions, lex)))
+            mentions.append(_Mention("room", "named", named[-1],
+                                     locates="release" not in verbs and _locates(toks, i, mentions, lex)))
             i = j
             continue
         if t in lex["other"] and (mentions or earlier) and not any(
@@ -185,7 +186,7 @@ def steps(command: str, world: World) -> list[tuple[set, list]]:
         elif t in lex["room"]:
             how = _modifier(toks, i, lex, door=False)
             mentions.append(_Mention("room", how, toks[i - 1] if how == "word" else None,
-                                     locates=_locates(toks, i - (how == "word"), mentions, lex)))
+                                     locates="release" not in verbs and _locates(toks, i - (how == "word"), mentions, lex)))
         elif t in thing_of_word or (t in lex["thing"] and world.things and (t != "it" or named_thing)) or \
                 (world.things and _handled(toks, i, lex, world)):
             named_thing = True

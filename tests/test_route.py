@@ -91,6 +91,10 @@ def test_a_dungeon_without_rooms_has_no_world_and_no_route():
     # and not named elsewhere in the command, either equally likely
     ("go to the pink room", {("hall", "study"): 0.5, ("study", "study"): 0.5}),
     ("go to the study , then go to the pink room", {("kitchen", "study"): 0.5, ("hall", "study"): 0.5}),
+    # "put" takes the thing (a box, by a word the dungeon does not know) along, and "in the
+    # hall" is where it goes, not where it stands (as in "move the chair in the study to ...")
+    ("put the box in the hall", {("hall", "hall"): 1.0}),
+    ("move the chair in the study to the hall", {("hall", "hall"): 1.0}),
     # standing in a door at the end: on either side
     ("go to the door", {("kitchen", "study"): 0.5, ("hall", "study"): 0.5}),
 ])
