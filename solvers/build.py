@@ -8,9 +8,9 @@ state with h = the walk to its nearest standing place, never changing an atom al
 achieved (each achieved atom is *protected*). An atom whose search fails is set aside
 until another one is achieved. When nothing is ready or every ready atom fails, or when
 the goal's other conjuncts remain, gbfs finishes from the state reached (the fallback),
-with what is left of the budget. Two things are planned at the start: columns under the
-atoms that rest on nothing the goal builds (scaffold.planned_supports: serialised with
-the goal's atoms, they stay), and orders that fill an enclosed region from the inside out
+with what is left of the budget. A first try plans ahead: columns under the atoms that
+rest on nothing the goal builds (scaffold.planned_supports: serialised with the goal's
+atoms, they stay), and orders that fill an enclosed region from the inside out
 (access.exit_orders). Nothing here knows what is being built.
 
 The result carries `lower_bound` (goal_cells.lower_bound at the start: admissible).
@@ -46,7 +46,7 @@ def _distance(a, b) -> int:
 
 
 class _Builder:
-    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True, supports=True):
+    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True, ahead=True):
         self.model, self.cells, self.meter, self.budget = model, cells, meter, budget
         self.read = CellReader(model)
         self.succ = model.search_successors()
@@ -76,8 +76,8 @@ class _Builder:
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
         self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
-        self.supports = supports   # plan supports at the start (a try may go without: build_finish.py)
-        self.planned = 0      # how many cells of planned supports joined the atoms
+        self.ahead = ahead    # plan supports and exit orders at the start (a try may go without: build_finish.py)
+        self.planned = 0      # how many supports' cells and exit orders were planned
         if self.rng:
             self.rng.shuffle(self.walkers)
         # actions that clear a cell without moving: a gathering walk may use them when blocked in
@@ -412,11 +412,12 @@ class _Builder:
         orders among them: (todo, blockers: q -> how many atoms q still waits for,
         released: p -> [q] that wait for p)."""
         waits = orders(self.cells)             # q -> atoms that must come before q
-        if self.access is not None:
+        if self.access is not None and self.ahead:
             todo = {pos: v for pos, v in self.cells.atoms if self.read(start, *pos) != v}
             holding = {pos for pos, v in self.cells.atoms if pos not in todo}
             for q, ps in exit_orders(self.access, todo, holding, waits).items():
                 waits.setdefault(q, []).extend(ps)
+                self.planned += len(ps)
         blockers = {q: len(ps) for q, ps in waits.items()}
         released = {}
         for q, ps in waits.items():
@@ -468,16 +469,25 @@ class _Builder:
             return path, "ok"
         return None, "failed"
 
+    def plans_ahead(self, start) -> bool:
+        """Whether planning ahead finds supports or exit orders to plan from `start` (a try
+        that plans ahead and finds none would repeat the next one)."""
+        todo = {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
+        if planned_supports(self, start, todo, support_levels(self.cells, self.read, start)):
+            return True
+        holding = {p for p, _ in self.cells.atoms if p not in todo}
+        return self.access is not None and bool(exit_orders(self.access, todo, holding, orders(self.cells)))
+
     def _plan_supports(self, start):
         """Serialise planned supports (scaffold.planned_supports) with the goal's atoms:
         they join `cells` (a copy: the goal and its lower bound stay as they are)."""
-        if not self.supports:
+        if not self.ahead:
             return
         todo = {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
         extra = planned_supports(self, start, todo, support_levels(self.cells, self.read, start))
         if not extra:
             return
-        self.planned = len(extra)
+        self.planned += len(extra)
         self.cells = dataclasses.replace(self.cells, atoms=[*self.cells.atoms, *extra.items()])
         for pos, v in extra.items():
             for a in self.cells.achievers.get(v, ()):
@@ -563,7 +573,7 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
         result = get_solver("gbfs")(model, budget, progress)
         result.solver = NAME
         return result
-    run = serialise(model, lambda seed, keep, supports, try_meter: _Builder(model, cells, try_meter, budget, local_limit,
-                                                                            seed, keep, supports),
+    run = serialise(model, lambda seed, keep, ahead, try_meter: _Builder(model, cells, try_meter, budget, local_limit,
+                                                                         seed, keep, ahead),
                     meter, budget)
     return finish(model, budget, meter, run, improve, progress)

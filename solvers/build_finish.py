@@ -5,16 +5,17 @@ short of the goal, and the shorter plan made of what it found.
   near places or atoms it takes first can decide whether it strands itself (the last
   cell walled in by scaffolding). When a try stops short of the goal, another one starts
   from the start, while the budget lasts, at most len(TRIES) in all; the try that reached
-  the goal, or else the one that left the fewest atoms, is kept. The first plans the
-  supports of atoms that rest on nothing the goal builds (solvers/scaffold.py; columns
-  inside what the goal encloses must rise early), the second makes them when their atom
-  comes (an open structure whose blocks are needed to climb); both keep what the pending
-  atoms take (no search spends it, on scaffolding say: a world holding just the blocks
-  its top needs); the third does not (a structure whose scaffolds must borrow the blocks
-  it is made of, and give them back); the others keep it, with other ties (their walks'
-  action order shuffled by a seed). A try that would repeat an earlier one (no supports
-  to plan) is skipped. Each try but the last may take half the time left: one way that
-  grinds cannot starve the other.
+  the goal, or else the one that left the fewest atoms, is kept. The first plans ahead
+  (solvers/build.py: the supports of atoms that rest on nothing the goal builds, which
+  must rise early inside what the goal encloses, and the orders that fill an enclosed
+  region from the inside out) and may take a quarter of the time left; it is skipped when
+  there is nothing to plan. The others make supports when their atom comes (an open
+  structure needs its blocks to climb): the second keeps what the pending atoms take (no
+  search spends it, on scaffolding say: a world holding just the blocks its top needs),
+  the third does not (a structure whose scaffolds must borrow the blocks it is made of,
+  and give them back), the others keep it, with other ties (their walks' action order
+  shuffled by a seed). Each try but the first and the last may take half the time left:
+  one way that grinds cannot starve the others.
 - **The fallback rule** (`search_may_help`, the one place of it). gbfs gets what is left
   of the budget from the state reached only where a search may help: the goal has a
   conjunct other than cell atoms and amounts to gather (which the builder does not
@@ -34,7 +35,8 @@ from .shorten import eliminate
 
 NAME = "build"
 TRIES = ((0, True, True), (0, True, False), (0, False, False), (1, True, False), (2, True, False), (3, True, False))
-# (seed of the ties, keep, plan supports) of each try
+# (seed of the ties, keep, plan ahead) of each try
+AHEAD_SHARE = 4         # the try that plans ahead may take 1/AHEAD_SHARE of the time left
 FALLBACK_UP_TO = 3      # atoms left (and no amount short) for which the gbfs fallback still runs
 SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
 IMPROVE_STATES = 100_000
@@ -104,18 +106,16 @@ def serialise(model, make_builder, meter, budget: Budget) -> Run:
     one that left the fewest atoms. Its stats count every try."""
     from ..heuristics.goal_cells import lower_bound
     best, stats = None, dict(expanded=0, generated=0, stored=0)
-    done = set()     # (seed, keep, planned any supports) of the tries run
-    for k, (seed, keep, supports) in enumerate(TRIES):
-        if (seed, keep, False) in done and not supports:
-            continue
+    for k, (seed, keep, ahead) in enumerate(TRIES):
         until = None
         if budget.time_limit is not None and k < len(TRIES) - 1:
-            until = meter.elapsed() + max(0.0, budget.time_limit - meter.elapsed()) / 2
-        builder = make_builder(seed, keep, supports, _TryMeter(meter, until))
+            until = meter.elapsed() + max(0.0, budget.time_limit - meter.elapsed()) / (AHEAD_SHARE if ahead else 2)
+        builder = make_builder(seed, keep, ahead, _TryMeter(meter, until))
+        if ahead and not builder.plans_ahead(model.initial):
+            continue
         if best is None:
             bound = lower_bound(builder.cells, model, model.initial, builder.read)
         plan, state, why = builder.run(model.initial)
-        done.add((seed, keep, bool(builder.planned)))
         if why == TRY_SPENT:       # this try's share is gone: the next one starts
             why = None
         stats = dict(expanded=stats["expanded"] + builder.expanded, generated=stats["generated"] + builder.generated,
