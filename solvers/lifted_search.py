@@ -15,7 +15,9 @@ need is unmet, the way to the nearest place to step it up (break a block of T, p
 up) that undoes no landmark met, and on from there to an achiever's place, is a way to
 work too (lifted_supplies.py): without the way on, fetching the last block looked worse
 than staying beside the goal, and putting a block down to take it back looked like
-progress. (The block-building benchmark's plus shape of five blocks: stuck at 13 with
+progress. A goal that is any of several values of a counter ("holds 5 or more T", an
+`or`) costs the counter's distance to the nearest of them, and its nearest refill is a
+place to go too (`_direct`). (The block-building benchmark's plus shape of five blocks: stuck at 13 with
 the sum; at 3 with the moves shared, its last block wanting a count spent on a support;
 solved with supplies too.)
 
@@ -38,7 +40,7 @@ import heapq
 import itertools
 
 from .base import Budget, Meter, Result, budget_result
-from ..pddl_io.lifted_types import TRUE, Domain, Problem
+from ..pddl_io.lifted_types import TRUE, Domain, Problem, conjuncts
 from ..pddl_io.lifted_joins import JoinCompiler
 from ..heuristics.lifted_distances import Distances
 from ..heuristics.lifted_landmarks import landmarks, supply
@@ -229,19 +231,23 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
     supplies: dict = {}   # supply (lifted_landmarks.supply) -> steps(s, k): the counter's steps left, up to k
     fill: dict = {}       # supply -> [(relaxed join, its parameters, the mover's dropped atoms)]: its refills
     relaxed: list = []
+    def add_fill(sup):
+        if sup not in fill:
+            fill[sup] = []
+            for pre, params, types, dropped, deletes in refills(task, dist, sup):
+                fill[sup].append((len(relaxed), params, dropped, deletes))
+                relaxed.append((pre, params, types))
+
     for m, ns in marks:
-        direct = None
-        if m[0] == "atom" and len(m[2]) == 2 and dist.functional(m[1], m[2][0]):
-            direct = (m[1], m[2][0], m[2][1])
+        direct = _direct(task, dist, m)
+        if direct is not None and direct[3] is not None:
+            add_fill(direct[3])
         inst = [] if direct or not ns else [(fs, [test_of(o) for o in others], _entry_groups(dist, fs, test_of))
                                             for fs, others in dist.instances(m)]
         sup = supply(task, m) if ns and not direct else None
         if sup is not None and sup not in supplies:
             supplies[sup] = counter(task, sup)
-            fill[sup] = []
-            for pre, params, types, dropped, deletes in refills(task, dist, sup):
-                fill[sup].append((len(relaxed), params, dropped, deletes))
-                relaxed.append((pre, params, types))
+            add_fill(sup)
         plan_h.append((test_of(m), [test_of(n) for n in ns], direct, inst, sup))
     goal_marks = [(m, test_of(m)) for m, _ in marks]
     succ = Successors(task, list(formulas), relaxed)
@@ -269,7 +275,12 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
             if tests[mt](s):
                 continue
             if direct is not None:
-                total += dist.distance(direct[0], direct[1], value(s, direct[0], direct[1], cache), direct[2])
+                now = value(s, direct[0], direct[1], cache)
+                d = min(dist.distance(direct[0], direct[1], now, v) for v in direct[2])
+                total += d
+                r = refill(s, direct[3], cache, filled) if d and direct[3] is not None else None
+                if r is not None:       # where the count can be stepped toward the goal
+                    near.append((r[0], len(near), ()))
                 continue
             missing = sum(1 for n in nts if not tests[n](s))
             total += 1 + missing
@@ -377,6 +388,42 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
     def count(s) -> int:
         return sum(1 for mt, *_ in plan_h if not tests[mt](s))
     return succ, h, count
+
+
+def _direct(task: LiftedTask, dist: Distances, m):
+    """A landmark that is a value of a functional atom, P(o, v), or any of several,
+    (or P(o, v1) P(o, v2) ...) ("holds at least 5 T"): (P, o, values, toward), its cost
+    the distance to the nearest value; `toward`, for several values, is the counter step
+    (a supply key, lifted_supplies.refills) that leads toward them from the start, so
+    the nearest place to take one is where to go. None for any other landmark."""
+    if m[0] == "atom" and len(m[2]) == 2 and dist.functional(m[1], m[2][0]):
+        return (m[1], m[2][0], (m[2][1],), None)
+    if m[0] != "or" or not m[1] or any(c[0] != "atom" or len(c[2]) != 2 for c in m[1]):
+        return None
+    pred, obj = m[1][0][1], m[1][0][2][0]
+    if any(c[1] != pred or c[2][0] != obj for c in m[1]) or not dist.functional(pred, obj):
+        return None
+    values = tuple(c[2][1] for c in m[1])
+    start = next((args[1] for i, args in task.index.get((pred, 0, obj), ()) if i < task.n_init), None)
+    if start is None:
+        return (pred, obj, values, None)
+    far = min(dist.distance(pred, obj, start, v) for v in values)
+    toward = None
+    for a in task.dom.actions:
+        for d in a.effects:
+            if d.add or d.pred != pred or len(d.args) != 2:
+                continue
+            for e in a.effects:
+                if not e.add or e.pred != pred or e.args[0] != d.args[0] or e.args[1] == d.args[1]:
+                    continue
+                for c in conjuncts(a.pre):
+                    if c[0] != "atom" or c[1] in task.fluent or len(c[2]) != 2 or set(c[2]) != {d.args[1], e.args[1]}:
+                        continue
+                    pos = c[2].index(e.args[1])
+                    nxt = [f[pos] for f in task.static_all.get(c[1], ()) if f[1 - pos] == start]
+                    if toward is None and any(min(dist.distance(pred, obj, w, v) for v in values) < far for w in nxt):
+                        toward = (pred, c[1], pos)
+    return (pred, obj, values, toward)
 
 
 def _entry_groups(dist: Distances, fs: list, test_of) -> list:

@@ -30,7 +30,9 @@ HAND_COSTS = {"gripper-3": ("gripper-domain", 9), "blocksworld-4": ("blocksworld
               # ledge-1: 4, derived in its comment
               "ledge-1": ("ledge-domain", 4),
               # stock-1: 11, derived in its comment
-              "stock-1": ("stock-domain", 11)}
+              "stock-1": ("stock-domain", 11),
+              # stock-2: 4, derived in its comment
+              "stock-2": ("stock-domain", 4)}
 
 
 def files(problem):
@@ -283,3 +285,14 @@ def test_a_refill_is_a_schema_stepping_the_counter_up_with_the_movers_place_left
     mark = ("exists", (("?t", frozenset({"token"})),), ("atom", "on", ("?t", "c2")))
     assert undoes(task, s, mark, [("on", ("t1", "c2"))])
     assert not undoes(task, s, mark, [("on", ("t1", "c3"))])
+
+
+def test_a_goal_of_any_of_several_counts_is_a_distance_with_a_place_to_fill_it():
+    """stock-2 wants (or (has r n2) (has r n3)): a value of the functional `has`, its cost
+    the distance to the nearer value (n0 -> n2: 2 digs), and dig, stepping along succ
+    toward it, the count step whose nearest place is where to go."""
+    from bcc.heuristics.lifted_distances import Distances
+    from bcc.solvers.lifted_search import _direct
+    dom, prob, task = lifted("stock-2")
+    direct = _direct(task, Distances(task), prob.goal)
+    assert direct == ("has", "r", ("n2", "n3"), ("has", "succ", 1))
