@@ -46,6 +46,7 @@ class Distances:
         self._graphs: dict = {}
         self._to: dict = {}
         self._entries: dict = {}
+        self._steppers = None
 
     # ---- functional predicates and their graphs -----------------------------------------
     def functional(self, pred: str, obj: str) -> bool:
@@ -185,13 +186,18 @@ class Distances:
         task = self.task
         want = dict(wanted)
         found = set()
-        for a in task.dom.actions:
-            types = dict(a.params)
+        if self._steppers is None:      # per schema, once: its types, its adds of a binary atom, its conjuncts
+            self._steppers = [(a, dict(a.params), [e for e in a.effects if e.add and len(e.args) == 2
+                                                   and not e.params and e.cond == TRUE], conjuncts(a.pre))
+                              for a in task.dom.actions]
+        for a, types, adds, pre in self._steppers:
+            if not any(e.pred in want for e in adds):
+                continue
             env: dict = {}
             changed = set()
             ok = True
-            for e in a.effects:
-                if not e.add or e.pred not in want or e.params or e.cond != TRUE:
+            for e in adds:
+                if e.pred not in want:
                     continue
                 t, v = e.args
                 if t.startswith("?") and not task.fits(obj, types.get(t, frozenset({"object"}))) or \
@@ -207,7 +213,7 @@ class Distances:
             if not changed or not ok:
                 continue
             # a wanted value the schema does not change must hold before it too
-            for c in conjuncts(a.pre):
+            for c in pre:
                 if c[0] == "atom" and c[1] in want and c[1] not in changed and len(c[2]) == 2 \
                         and env.get(c[2][0], c[2][0]) == obj and c[2][1].startswith("?"):
                     if env.setdefault(c[2][1], want[c[1]]) != want[c[1]]:
@@ -215,16 +221,16 @@ class Distances:
             if not ok:
                 continue
             for full in self._complete(a, env, types):
-                ground = substitute(a.pre, full)
-                if any(c[0] == "atom" and c[1] not in task.fluent and not free_vars(c)
-                       and (c[1], c[2]) not in task.static for c in conjuncts(ground)):
+                ground = [c for c in (substitute(c, full) for c in pre) if not free_vars(c)]
+                if any(c[0] == "atom" and c[1] not in task.fluent and (c[1], c[2]) not in task.static
+                       for c in ground):
                     continue          # a static condition fails: this way does not exist
-                if any(c[0] == "atom" and c[1] in want and c[1] not in changed and not free_vars(c)
-                       and c[2] != (obj, want[c[1]]) for c in conjuncts(ground)):
+                if any(c[0] == "atom" and c[1] in want and c[1] not in changed and c[2] != (obj, want[c[1]])
+                       for c in ground):
                     continue
-                conds = frozenset(c for c in conjuncts(ground) if not free_vars(c)
-                                  and not (c[0] == "atom" and (c[1] not in task.fluent or
-                                           len(c[2]) == 2 and c[2][0] == obj and self.functional(c[1], obj))))
+                conds = frozenset(c for c in ground
+                                  if not (c[0] == "atom" and (c[1] not in task.fluent or
+                                          len(c[2]) == 2 and c[2][0] == obj and self.functional(c[1], obj))))
                 found.add(conds)
         kept = sorted(found, key=lambda c: (len(c), sorted(map(repr, c))))
         out = []
@@ -255,7 +261,8 @@ class Distances:
                         out.append(e)          # nothing to join on
                         continue
                     changed = True
-                    for fact in task.static_all.get(c[1], ()):
+                    k = next(i for i, t in enumerate(args) if not t.startswith("?"))
+                    for fact in task.static_index.get((c[1], k, args[k]), ()):    # the facts with that object there
                         e2 = dict(e)
                         if all(e2.setdefault(t, o) == o if t.startswith("?") else t == o
                                for t, o in zip(args, fact)):
