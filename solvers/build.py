@@ -412,10 +412,8 @@ class _Builder:
         orders among them: (todo, blockers: q -> how many atoms q still waits for,
         released: p -> [q] that wait for p)."""
         waits = orders(self.cells)             # q -> atoms that must come before q
-        if self.access is not None and self.ahead:
-            todo = {pos: v for pos, v in self.cells.atoms if self.read(start, *pos) != v}
-            holding = {pos for pos, v in self.cells.atoms if pos not in todo}
-            for q, ps in exit_orders(self.access, todo, holding, waits).items():
+        if self.ahead:
+            for q, ps in self._exit_orders(start, waits).items():
                 waits.setdefault(q, []).extend(ps)
                 self.planned += len(ps)
         blockers = {q: len(ps) for q, ps in waits.items()}
@@ -469,22 +467,30 @@ class _Builder:
             return path, "ok"
         return None, "failed"
 
+    def _pending(self, start) -> dict:
+        """{position: value} of the atoms that do not hold in `start`."""
+        return {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
+
+    def _exit_orders(self, start, waits) -> dict:
+        """access.exit_orders from `start` ({} without access)."""
+        if self.access is None:
+            return {}
+        todo = self._pending(start)
+        return exit_orders(self.access, todo, {p for p, _ in self.cells.atoms if p not in todo}, waits)
+
     def plans_ahead(self, start) -> bool:
         """Whether planning ahead finds supports or exit orders to plan from `start` (a try
         that plans ahead and finds none would repeat the next one)."""
-        todo = {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
-        if planned_supports(self, start, todo, support_levels(self.cells, self.read, start)):
+        if planned_supports(self, start, self._pending(start), support_levels(self.cells, self.read, start)):
             return True
-        holding = {p for p, _ in self.cells.atoms if p not in todo}
-        return self.access is not None and bool(exit_orders(self.access, todo, holding, orders(self.cells)))
+        return bool(self._exit_orders(start, orders(self.cells)))
 
     def _plan_supports(self, start):
         """Serialise planned supports (scaffold.planned_supports) with the goal's atoms:
         they join `cells` (a copy: the goal and its lower bound stay as they are)."""
         if not self.ahead:
             return
-        todo = {p: v for p, v in self.cells.atoms if self.read(start, *p) != v}
-        extra = planned_supports(self, start, todo, support_levels(self.cells, self.read, start))
+        extra = planned_supports(self, start, self._pending(start), support_levels(self.cells, self.read, start))
         if not extra:
             return
         self.planned += len(extra)
