@@ -50,12 +50,8 @@ def landmarks(task: LiftedTask) -> list:
 
 def needs(task: LiftedTask, mark) -> list:
     """The shared precondition of the landmark's achievers (see the module docstring), or []."""
-    if mark[0] == "exists":
-        qtypes = dict(mark[1])
-        atoms = [c for c in conjuncts(mark[2]) if c[0] == "atom"]
-    elif mark[0] == "atom":
-        qtypes, atoms = {}, [mark]
-    else:
+    qtypes, atoms = _mark_atoms(mark)
+    if atoms is None:
         return []
     if not atoms or all(task.holds_atom(frozenset(), a[1], a[2]) for a in atoms if not free_vars(a)) and \
             not free_vars(mark) and mark[0] == "atom":
@@ -80,15 +76,21 @@ def needs(task: LiftedTask, mark) -> list:
     return [("exists", tuple((v, types0[v]) for v in vs), body) if vs else body]
 
 
+def _mark_atoms(mark):
+    """(the types of its quantified variables, its atoms) of an `exists` or `atom`
+    landmark; ({}, None) for any other."""
+    if mark[0] == "exists":
+        return dict(mark[1]), [c for c in conjuncts(mark[2]) if c[0] == "atom"]
+    if mark[0] == "atom":
+        return {}, [mark]
+    return {}, None
+
+
 def _achievers(task: LiftedTask, mark) -> list:
     """[(schema, binding, types)]: the schemas whose add effect can make one of the
     landmark's atoms true, bound as far as that atom binds them."""
-    if mark[0] == "exists":
-        qtypes = dict(mark[1])
-        atoms = [c for c in conjuncts(mark[2]) if c[0] == "atom"]
-    elif mark[0] == "atom":
-        qtypes, atoms = {}, [mark]
-    else:
+    qtypes, atoms = _mark_atoms(mark)
+    if atoms is None:
         return []
     bound = []
     for a in task.dom.actions:
