@@ -74,7 +74,9 @@ def exit_orders(access: Access, todo: dict, holding: set, waits: dict) -> dict:
     that would close a cycle with `waits` (the orders the actions imply) is left out."""
     pending = {p for p, v in todo.items() if v != access.default}
     depth, heap = {}, []
-    left, worst, users = {}, {}, {}      # place -> pending body atoms not yet resolved / their greatest depth
+    left, worst = {}, {}     # place -> pending body atoms not yet resolved / their greatest depth
+    in_body = {}             # pending atom -> the places whose body holds it
+    atoms_at = {}            # place -> the atoms it is a place of
     for p in pending:
         for st in access.places.get(p, ()):
             body = access.body[st]
@@ -87,19 +89,19 @@ def exit_orders(access: Access, todo: dict, holding: set, waits: dict) -> dict:
             if st not in left:
                 left[st], worst[st] = len(inside), -1
                 for c in inside:
-                    users.setdefault(c, []).append(st)
-            users.setdefault(("place", st), []).append(p)
+                    in_body.setdefault(c, []).append(st)
+            atoms_at.setdefault(st, []).append(p)
     chosen = {}
     while heap:
         d, p, st = heapq.heappop(heap)
         if p in depth:
             continue
         depth[p], chosen[p] = d, st
-        for place in users.get(p, ()):
+        for place in in_body.get(p, ()):
             left[place] -= 1
             worst[place] = max(worst[place], d)
             if left[place] == 0:
-                for q in users.get(("place", place), ()):
+                for q in atoms_at.get(place, ()):
                     if q not in depth:
                         heapq.heappush(heap, (worst[place] + 1, q, place))
     out: dict = {}

@@ -77,7 +77,6 @@ class _Builder:
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
         self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
         self.ahead = ahead    # plan supports and exit orders at the start (a try may go without: build_finish.py)
-        self.planned = 0      # how many supports' cells and exit orders were planned
         if self.rng:
             self.rng.shuffle(self.walkers)
         # actions that clear a cell without moving: a gathering walk may use them when blocked in
@@ -415,7 +414,6 @@ class _Builder:
         if self.ahead:
             for q, ps in self._exit_orders(start, waits).items():
                 waits.setdefault(q, []).extend(ps)
-                self.planned += len(ps)
         blockers = {q: len(ps) for q, ps in waits.items()}
         released = {}
         for q, ps in waits.items():
@@ -493,7 +491,6 @@ class _Builder:
         extra = planned_supports(self, start, self._pending(start), support_levels(self.cells, self.read, start))
         if not extra:
             return
-        self.planned += len(extra)
         self.cells = dataclasses.replace(self.cells, atoms=[*self.cells.atoms, *extra.items()])
         for pos, v in extra.items():
             for a in self.cells.achievers.get(v, ()):
