@@ -69,7 +69,10 @@ def load_domain(path: str | Path, _chain: tuple = ()) -> Domain:
         if base_path.resolve() in chain:
             names = " -> ".join(p.stem for p in chain + (base_path.resolve(),))
             raise error_at(data, "extends", f"domains extend each other in a cycle: {names}")
-        base = load_domain(base_path, chain)
+        from .cache import load_cached
+        # the base through the cache, as a dungeon reads its domain: a new or edited domain
+        # on a shipped one skips the base chain's YAML and lark
+        base = load_cached(base_path, lambda p: load_domain(p, chain), kind="domains")
     check_keys(data, DOMAIN_KEYS, {"domain"} if base else {"domain", "classes", "actions"}, "a domain")
     if data.get("types") is not None and not isinstance(data["types"], YMap):
         raise error_at(data, "types", "`types` must map type names to their values")

@@ -131,16 +131,12 @@ class _Alias:
     start_mark: object
 
 
-class _Loader(yaml.SafeLoader):
-    """SafeLoader for plain data: bounded nesting, bounded numbers, no timestamps.
-
-    An unquoted `2001-01-01` stays text (a dungeon has no use for dates)."""
+class _Checks:
+    """What bcc's loaders add to PyYAML's: bounded nesting, bounded numbers, no timestamps,
+    and where each `*name` alias is used. An unquoted `2001-01-01` stays text (a dungeon
+    has no use for dates)."""
     yaml_implicit_resolvers = {first: [(tag, rx) for tag, rx in resolvers if tag != _TIMESTAMP]
                                for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()}
-
-    def __init__(self, text: str, path: str):
-        super().__init__(text)
-        self.bcc_path, self.bcc_depth = path, 0
 
     def compose_node(self, parent, index):
         if self.check_event(yaml.AliasEvent):
@@ -166,22 +162,95 @@ class _Loader(yaml.SafeLoader):
         raise BccError(problem, self.bcc_path, *node_pos(node))
 
 
+class _Loader(_Checks, yaml.SafeLoader):
+    """PyYAML's own loader, all Python: its messages and places are the ones bcc reports."""
+
+    def __init__(self, text: str, path: str):
+        yaml.SafeLoader.__init__(self, text)
+        self.bcc_path, self.bcc_depth = path, 0
+
+
 _Loader.add_constructor("tag:yaml.org,2002:int", _Loader.construct_yaml_int)
+
+try:
+    from yaml.cyaml import CParser
+except ImportError:     # PyYAML built without libyaml
+    CParser = None
+
+if CParser is not None:
+    class _FastLoader(_Checks, yaml.composer.Composer, CParser, yaml.constructor.SafeConstructor,
+                      yaml.resolver.Resolver):
+        """libyaml scans and parses (about six times faster on a large domain); the nodes
+        are composed by PyYAML's Python composer, so the checks above and the places of
+        nodes are the same. Used only for text that loads: any YAML error is reported by
+        `_Loader` instead, with PyYAML's wording."""
+
+        def __init__(self, text: str, path: str):
+            CParser.__init__(self, text)
+            yaml.composer.Composer.__init__(self)
+            yaml.constructor.SafeConstructor.__init__(self)
+            yaml.resolver.Resolver.__init__(self)
+            self.bcc_path, self.bcc_depth = path, 0
+
+        def get_single_node(self):
+            root = super().get_single_node()
+            _plain_marks(root)
+            return root
+
+    _FastLoader.add_constructor("tag:yaml.org,2002:int", _FastLoader.construct_yaml_int)
+else:
+    _FastLoader = None
+
+
+def _plain_marks(root) -> None:
+    """libyaml's marks as PyYAML's own Mark (name, index, line, column): the compiled-dungeon
+    cache pickles the nodes, and its unpickler builds only plain data classes."""
+    made: dict = {}
+
+    def plain(mark):
+        key = id(mark)
+        if key not in made:
+            made[key] = (mark, yaml.error.Mark(mark.name, mark.index, mark.line, mark.column, None, None))
+        return made[key][1]
+
+    seen: set[int] = set()
+    todo = [root]
+    while todo:
+        node = todo.pop()
+        if node is None or id(node) in seen:
+            continue
+        seen.add(id(node))
+        if isinstance(node, _Alias):
+            node.start_mark = plain(node.start_mark)
+            todo.append(node.node)
+            continue
+        node.start_mark, node.end_mark = plain(node.start_mark), plain(node.end_mark)
+        if isinstance(node, yaml.SequenceNode):
+            todo.extend(node.value)
+        elif isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
+                todo.append(key)
+                todo.append(value)
 
 
 def load_yaml_text(text: str, path: str) -> YMap:
     if len(text) > MAX_FILE_BYTES:
         raise BccError(f"the text is larger than {MAX_FILE_BYTES // 2**20} MiB", path)
     src = SourceFile(path, text)
+    if _FastLoader is not None and not yaml.reader.Reader.NON_PRINTABLE.search(text):
+        loader = _FastLoader(text, path)
+        try:
+            return _converted(loader, src)
+        except yaml.YAMLError:
+            pass        # said again below, in PyYAML's words
+        finally:
+            loader.dispose()
     try:
         loader = _Loader(text, path)
     except yaml.reader.ReaderError as exc:
         raise _reader_error(exc, src) from None
     try:
-        root = loader.get_single_node()
-        if root is None:
-            raise BccError("the file is empty", path, 1, 1)
-        data = _Converter(loader, src).convert(root, 0)
+        return _converted(loader, src)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         problem = exc.problem or exc.context or "invalid YAML"
@@ -195,8 +264,15 @@ def load_yaml_text(text: str, path: str) -> YMap:
         raise BccError(f"invalid YAML: {shorten(str(exc).splitlines()[0], 200)}", path) from None
     finally:
         loader.dispose()
+
+
+def _converted(loader, src: SourceFile) -> YMap:
+    root = loader.get_single_node()
+    if root is None:
+        raise BccError("the file is empty", src.path, 1, 1)
+    data = _Converter(loader, src).convert(root, 0)
     if not isinstance(data, YMap):
-        raise BccError("expected a mapping of keys at the top level", path, 1, 1)
+        raise BccError("expected a mapping of keys at the top level", src.path, 1, 1)
     return data
 
 

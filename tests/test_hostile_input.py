@@ -12,6 +12,7 @@ The sweep over every field is marked slow; the quick loop runs a seeded sample.
 """
 from __future__ import annotations
 
+import functools
 import json
 import random
 import re
@@ -115,9 +116,9 @@ def all_mutations(canary: Path, every_string: bool = True):
 def write_case(tmp: Path, dungeon: str, doc, kind: str, where, text) -> Path:
     """Write the mutated file (and what it needs) into `tmp`; return the dungeon's path."""
     bad = mutated(doc, where, text)
-    base = yaml.safe_load((DUNGEONS_DIR / f"{dungeon}.yaml").read_text())
+    base = shipped_doc(dungeon)
     if kind == "domain":
-        (tmp / "hostile_domain.yaml").write_text(yaml.safe_dump(bad, allow_unicode=False), encoding="utf-8")
+        (tmp / "hostile_domain.yaml").write_text(_dump(bad), encoding="utf-8")
         base = dict(base, domain="hostile_domain.yaml")
         base.pop("extends", None)
         dungeon_doc = base
@@ -127,8 +128,26 @@ def write_case(tmp: Path, dungeon: str, doc, kind: str, where, text) -> Path:
             # an `extends:` names a sibling file: give it one
             (tmp / f"{bad['extends']}.yaml").write_text((DUNGEONS_DIR / f"{bad['extends']}.yaml").read_text())
     path = tmp / "hostile.yaml"
-    path.write_text(yaml.safe_dump(dungeon_doc, allow_unicode=False), encoding="utf-8")
+    path.write_text(_dump(dungeon_doc), encoding="utf-8")
     return path
+
+
+def _dump(doc) -> str:
+    """YAML text of plain data (libyaml's emitter where PyYAML has it: thousands of cases)."""
+    try:
+        return yaml.dump(doc, Dumper=getattr(yaml, "CSafeDumper", yaml.SafeDumper), allow_unicode=False)
+    except UnicodeEncodeError:      # a lone surrogate: only PyYAML's own emitter writes it (escaped)
+        return yaml.safe_dump(doc, allow_unicode=False)
+
+
+@functools.lru_cache(maxsize=None)
+def _shipped_text(dungeon: str) -> str:
+    return (DUNGEONS_DIR / f"{dungeon}.yaml").read_text()
+
+
+def shipped_doc(dungeon: str):
+    """A fresh copy of a shipped dungeon's plain data."""
+    return yaml.load(_shipped_text(dungeon), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
 
 
 def check_outcome(result, what: str) -> None:
