@@ -35,6 +35,7 @@ def parse_ipc(text: str) -> tuple[list, list, dict]:
         raise Invalid("the plan must sit between a line ==> and a line <==")
     body = lines[lines.index("==>") + 1:lines.index("<==")]
     actions, root, compound = [], None, {}
+    ids: set = set()           # every line id so far (a scan of the actions per line was quadratic)
     for line in body:
         words = line.split()
         if words[0] == "root":
@@ -43,8 +44,9 @@ def parse_ipc(text: str) -> tuple[list, list, dict]:
             root = [_id(w) for w in words[1:]]
             continue
         i = _id(words[0])
-        if i in compound or any(a[0] == i for a in actions):
+        if i in ids:
             raise Invalid(f"id {i} is used for two lines")
+        ids.add(i)
         if "->" in words:
             arrow = words.index("->")
             if arrow < 2 or len(words) < arrow + 2:

@@ -131,6 +131,9 @@ root 5 6
     ("0 move i1 bin s2\n1 check s2", "1 check s2\n0 move i1 bin s2", "not the plan's order"),
     ("root 5 6", "root 5", "line 2 is not part of the tree"),
     ("root 5 6", "root 5 6 9", "line 9 is used twice"),
+    ("1 check s2", "0 check s2", "id 0 is used for two lines"),                    # two actions
+    ("5 store i1 -> store-free 0 1", "4 store i1 -> store-free 0 1", "id 4 is used for two lines"),  # action, task
+    ("8 store i2 -> store-free 3 4", "7 store i2 -> store-free 3 4", "id 7 is used for two lines"),  # two tasks
 ])
 def test_the_verifier_refuses_bad_plans_with_their_reason(old, new, why):
     # Each edit breaks one rule of hddl/verify.py's docstring: a method's variables bound
