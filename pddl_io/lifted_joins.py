@@ -284,4 +284,15 @@ class JoinCompiler:
               "CANDS": task.typed_candidates, "TG": task.typed.get, "ALLOWED": task.symmetry.allowed, **self.tables}
         self.source = "\n".join(self.lines) + "\n"
         exec(compile(self.source, "<bcc lifted joins>", "exec"), ns)
+        self.ns, self.compiled = ns, len(self.lines)
         return ns
+
+    def compile_more(self) -> dict:
+        """The functions written since the last compile, run into the same namespace (a
+        heuristic that asks for tests only when it first needs them)."""
+        new = "\n".join(self.lines[self.compiled:]) + "\n"
+        self.ns.update(self.tables)
+        exec(compile(new, "<bcc lifted joins>", "exec"), self.ns)
+        self.source += new
+        self.compiled = len(self.lines)
+        return self.ns

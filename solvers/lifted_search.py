@@ -75,6 +75,7 @@ class Successors:
         for k, (pre, params, types) in enumerate(relaxed):
             jc.schema_function(f"R{k}", pre, params, types)
         self.ns = ns = jc.compile()
+        self.joins = jc
         self.relaxed = [ns[f"R{k}"] for k in range(len(relaxed))]    # bindings of other preconditions
         self.source = jc.source
         self.memo = ns["MEMO"]
@@ -83,6 +84,13 @@ class Successors:
                         for a, params, fn, effects in self.schemas]
         self.tests = [ns[name] for name, _ in tests]
         self.use_costs = prob.metric
+
+    def more_tests(self, formulas: list) -> None:
+        """Compile tests of further ground formulas; they follow the others in `tests`."""
+        names = [self.joins.test_function(f, {}) for f in formulas]
+        ns = self.joins.compile_more()
+        self.source = self.joins.source
+        self.tests.extend(ns[name] for name, _ in names)
 
     def begin(self, s) -> None:
         """The answers kept by `exists` functions are for one state: forget them on a new one."""
@@ -242,7 +250,7 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
         direct = _direct(task, dist, m)
         if direct is not None and direct[3] is not None:
             add_fill(direct[3])
-        inst = [] if direct or not ns else [(fs, [test_of(o) for o in others], _entry_groups(dist, fs, test_of))
+        inst = [] if direct or not ns else [(fs, [test_of(o) for o in others], _entry_groups(fs))
                                             for fs, others in dist.instances(m)]
         sup = supply(task, m) if ns and not direct else None
         if sup is not None and sup not in supplies:
@@ -371,12 +379,27 @@ def _landmark_heuristic(task: LiftedTask, prob: Problem, optimal: bool):
         filled[sup] = best
         return best
 
+    entry_tests: dict = {}     # (object, wanted values) -> [[test]] of each way to step there
+
+    def ways_in(key) -> list:
+        """The tests of each way to step onto a place, worked out and compiled when the
+        estimate first looks at the place (472 places of a large build took most of the
+        time before the first expansion when all were worked out at the start)."""
+        got = entry_tests.get(key)
+        if got is None:
+            ways = dist.entries(*key)
+            known = len(formulas)
+            got = entry_tests[key] = [[test_of(c) for c in e] for e in ways]
+            if len(formulas) > known:
+                succ.more_tests(list(formulas)[known:])
+        return got
+
     def entry(s, group, entered) -> int:
         """The false conjuncts of the cheapest way to step onto the group's values."""
         got = entered.get(group[0])
         if got is None:
             got = None
-            for e in group[2]:
+            for e in ways_in(group[0]):
                 c = sum(1 for k in e if not tests[k](s))
                 if got is None or c < got:
                     got = c
@@ -426,17 +449,14 @@ def _direct(task: LiftedTask, dist: Distances, m):
     return (pred, obj, values, toward)
 
 
-def _entry_groups(dist: Distances, fs: list, test_of) -> list:
-    """An instance's functional atoms by object: [(key, [(pred, obj, value)], [entry tests])]
-    (lifted_distances.Distances.entries: what stepping onto those values needs)."""
+def _entry_groups(fs: list) -> list:
+    """An instance's functional atoms by object: [(key, [(pred, obj, value)])], the key
+    (object, wanted values) naming the place whose entries (lifted_distances.Distances.entries:
+    what stepping onto those values needs) the estimate reads when it first looks there."""
     by_obj: dict = {}
     for p, o, v in fs:
         by_obj.setdefault(o, []).append((p, o, v))
-    out = []
-    for o, group in by_obj.items():
-        wanted = tuple(sorted((p, v) for p, _, v in group))
-        out.append(((o, wanted), group, [[test_of(c) for c in e] for e in dist.entries(o, wanted)]))
-    return out
+    return [((o, tuple(sorted((p, v) for p, _, v in group))), group) for o, group in by_obj.items()]
 
 
 def _novelty(task: LiftedTask, seen: set):
