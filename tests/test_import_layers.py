@@ -98,6 +98,7 @@ LAYER_OF = {
     "bcc.pddl_io.importer": "back end",
     "bcc.pddl_io.lifted_states": "back end",   # the lifted task's states and successors (no grounding)
     "bcc.pddl_io.lifted_joins": "back end",    # an action schema's bindings in a state, as generated code
+    "bcc.pddl_io.lifted_successors": "back end",   # the lifted successor function and its tests
     "bcc.pddl_io.replay": "back end",          # a plan replayed on the lifted task: a validator
     "bcc.pddl_export": "back end",             # a compiled Model written as PDDL, plans in its names
     # heuristics

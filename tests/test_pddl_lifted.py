@@ -268,10 +268,10 @@ def test_ledge_start_estimate_counts_the_step_the_last_move_needs():
     (an agent on level l2 beside c4), the agent's moves to its only achiever's place
     (c1 to c3: 2, l1 to l2: 1) and 1 for the block that stepping onto (c3, l2) needs
     (solid c3 l1): 6; one landmark is missing (a need is not counted as one)."""
-    from bcc.solvers.lifted_search import _landmark_heuristic
+    from bcc.heuristics.lifted_estimate import LandmarkEstimate
     dom, prob, task = lifted("ledge-1")
-    succ, h, count = _landmark_heuristic(task, prob, False)
-    assert h(frozenset()) == 6 and count(frozenset()) == 1
+    estimate = LandmarkEstimate(task, prob, False)
+    assert estimate.h(frozenset()) == 6 and estimate.count(frozenset()) == 1
 
 
 def test_a_counter_spent_by_every_achiever_is_a_supply():
@@ -316,7 +316,7 @@ def test_a_goal_of_any_of_several_counts_is_a_distance_with_a_place_to_fill_it()
     the distance to the nearer value (n0 -> n2: 2 digs), and dig, stepping along succ
     toward it, the count step whose nearest place is where to go."""
     from bcc.heuristics.lifted_distances import Distances
-    from bcc.solvers.lifted_search import _direct
+    from bcc.heuristics.lifted_estimate import _direct
     dom, prob, task = lifted("stock-2")
     direct = _direct(task, Distances(task), prob.goal)
     assert direct == ("has", "r", ("n2", "n3"), ("has", "succ", 1))
