@@ -124,53 +124,18 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
         log(f"the world differs from the dungeon's start: {'; '.join(diffs[:4])}")
     plan: list = []
     step = 0
-    while True:
-        if model.is_goal(state):
-            result.reached_goal, result.status = True, "goal"
-            result.message = f"goal reached in {step} steps"
-            break
-        if model.is_failure(state):
-            result.status, result.message = "failure", "the agent is dead (bcc's rules)"
-            break
-        if step >= max_steps:
-            result.status, result.message = "max_steps", f"stopped after {max_steps} steps"
-            break
+    while not _stopped(model, result, state, step, max_steps):
         if not plan:
-            if len(result.plans) > max_replans:
-                result.status, result.message = "diverged", f"the world diverged {max_replans} times; giving up"
+            plan = _replan(model, result, state, step, solver, budget, solver_options, max_replans, log)
+            if plan is None:
                 break
-            res = solve_from(model, state, solver, budget, replanning=bool(result.plans),
-                             solver_options=solver_options)
-            result.plans.append({"from_step": step, "plan": list(res.plan), "seconds": round(res.seconds, 3),
-                                 "solved": res.solved})
-            if not res.solved:
-                result.status, result.message = "no_plan", f"{solver}: {res.message or res.status}"
-                break
-            plan = list(res.plan)
-            log(f"{'plan' if len(result.plans) == 1 else 'replan'} ({solver}, {res.seconds:.2f} s): "
-                f"{len(plan)} actions: {' '.join(plan)}")
         if delay and step:
             time.sleep(delay)     # slow enough for a person watching in the game
         action = plan.pop(0)
-        index = model.action_index(action)
-        predicted = model.apply(index, state)
-        if predicted is None:
-            raise BccError(f"step {step + 1}: the plan's {action} does not apply: "
-                           f"{model.why_not(index, state)} is false")
-        if model.is_failure(predicted):
-            # The server would let the bot walk into lava unharmed: the bridge enforces
-            # bcc's rule by refusing the step instead.
-            result.status = "refused"
-            result.message = f"step {step + 1}: {action} would kill the agent in bcc's rules; not executed"
+        predicted = model.apply(model.action_index(action), state)
+        notes = _refused(model, world, result, state, predicted, step, action)
+        if notes is None:
             break
-        notes = []
-        if world.kind == "positions":
-            # where the real game differs from the model (differences.py): noted, or refused
-            notes, refusal = known_step(world, state, predicted)
-            if refusal:
-                result.status = "refused"
-                result.message = f"step {step + 1}: {action}: {refusal}; not executed"
-                break
         step += 1
         t0 = time.perf_counter()
         for request in requests(world, action, state, predicted):
@@ -179,17 +144,7 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
         seconds = time.perf_counter() - t0
         diffs = difference(model, predicted, parsed.state)
         result.steps.append(Step(step, action, predicted, parsed.state, seconds, diffs, notes + parsed.notes))
-        log(f"{step:3d} {action:<14} {seconds * 1000:5.0f} ms  predicted {world.describe(predicted)}")
-        log(f"    {'':<14} {'':>8}  observed  {world.describe(parsed.state)}"
-            + ("  = match" if not diffs else "  DIVERGED"))
-        g = model.grid
-        for x, y, z, old, new in changed_cells(model, state, predicted):
-            seen = g.value_names[g.cell(parsed.state, x, y, z)]
-            log(f"        block ({x}, {y}, {z}): {g.value_names[old]} -> {g.value_names[new]}, observed {seen}")
-        for d in diffs[:6]:
-            log(f"        {d}")
-        for n in (notes + parsed.notes)[:4]:
-            log(f"        note: {n}")
+        _log_step(model, world, log, step, action, seconds, state, predicted, parsed, diffs, notes)
         state = parsed.state
         if after_step is not None:
             after_step(step, bridge)
@@ -204,6 +159,78 @@ def run(model: Model, bridge: Bridge, solver: str = "astar", budget: Budget | No
             plan = []   # the world wins: replan from what is really there
     result.total_seconds = time.perf_counter() - started
     return result
+
+
+def _stopped(model: Model, result: RunResult, state, step: int, max_steps: int) -> bool:
+    """Whether the run ends at `state` (the goal, the agent dead, the step limit); the
+    result says why."""
+    if model.is_goal(state):
+        result.reached_goal, result.status = True, "goal"
+        result.message = f"goal reached in {step} steps"
+    elif model.is_failure(state):
+        result.status, result.message = "failure", "the agent is dead (bcc's rules)"
+    elif step >= max_steps:
+        result.status, result.message = "max_steps", f"stopped after {max_steps} steps"
+    else:
+        return False
+    return True
+
+
+def _replan(model: Model, result: RunResult, state, step: int, solver: str, budget: Budget, solver_options,
+            max_replans: int, log) -> list | None:
+    """A plan from `state` (recorded in the result), or None when the run ends: too many
+    replans, or no plan."""
+    if len(result.plans) > max_replans:
+        result.status, result.message = "diverged", f"the world diverged {max_replans} times; giving up"
+        return None
+    res = solve_from(model, state, solver, budget, replanning=bool(result.plans), solver_options=solver_options)
+    result.plans.append({"from_step": step, "plan": list(res.plan), "seconds": round(res.seconds, 3),
+                         "solved": res.solved})
+    if not res.solved:
+        result.status, result.message = "no_plan", f"{solver}: {res.message or res.status}"
+        return None
+    log(f"{'plan' if len(result.plans) == 1 else 'replan'} ({solver}, {res.seconds:.2f} s): "
+        f"{len(res.plan)} actions: {' '.join(res.plan)}")
+    return list(res.plan)
+
+
+def _refused(model: Model, world: WorldMap, result: RunResult, state, predicted, step: int, action: str):
+    """The notes on a step the bot may take (where the real game differs from the model,
+    differences.py), or None when it is refused (the result says why)."""
+    if predicted is None:
+        index = model.action_index(action)
+        raise BccError(f"step {step + 1}: the plan's {action} does not apply: "
+                       f"{model.why_not(index, state)} is false")
+    if model.is_failure(predicted):
+        # The server would let the bot walk into lava unharmed: the bridge enforces
+        # bcc's rule by refusing the step instead.
+        result.status = "refused"
+        result.message = f"step {step + 1}: {action} would kill the agent in bcc's rules; not executed"
+        return None
+    notes = []
+    if world.kind == "positions":
+        notes, refusal = known_step(world, state, predicted)
+        if refusal:
+            result.status = "refused"
+            result.message = f"step {step + 1}: {action}: {refusal}; not executed"
+            return None
+    return notes
+
+
+def _log_step(model: Model, world: WorldMap, log, step: int, action: str, seconds: float, state, predicted,
+              parsed, diffs: list, notes: list) -> None:
+    """The step's lines in the run's log: predicted and observed, the blocks it changes, what differs."""
+    log(f"{step:3d} {action:<14} {seconds * 1000:5.0f} ms  predicted {world.describe(predicted)}")
+    log(f"    {'':<14} {'':>8}  observed  {world.describe(parsed.state)}"
+        + ("  = match" if not diffs else "  DIVERGED"))
+    g = model.grid
+    for x, y, z, old, new in changed_cells(model, state, predicted):
+        seen = g.value_names[g.cell(parsed.state, x, y, z)]
+        log(f"        block ({x}, {y}, {z}): {g.value_names[old]} -> {g.value_names[new]}, observed {seen}")
+    for d in diffs[:6]:
+        log(f"        {d}")
+    for n in (notes + parsed.notes)[:4]:
+        log(f"        note: {n}")
 
 
 def run_dungeon(model: Model, port: int, solver: str = "astar", budget: Budget | None = None,
