@@ -274,8 +274,9 @@ def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance
     """The ground task; with `max_work`, TooBig when grounding would take more steps than that."""
     g = Grounder(dom, prob, max_actions, max_work)
     reached, bindings = g.explore()
-    init = prob.init
-    use_costs = prob.metric
+    raw = [(a, key, dict(zip((v for v, _ in a.params), key)))
+           for ai, a in enumerate(dom.actions) for key in sorted(bindings.get(ai, ()))]
+    changing, inst_effects = _instantiated_effects(g, raw, reached, prob.init)
     atom_ids: dict = {}
     atoms: list = []
 
@@ -286,12 +287,26 @@ def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance
             atoms.append(atom)
         return i
 
-    # First pass: instantiate effects to learn which reached atoms can change at all.
-    raw = []
-    for ai, a in enumerate(dom.actions):
-        for key in sorted(bindings.get(ai, ())):
-            env = dict(zip((v for v, _ in a.params), key))
-            raw.append((a, key, env))
+    fold = _folder(g, changing, prob.init, atom_id)
+    actions = []
+    for (a, key, env), effs in zip(raw, inst_effects):
+        action = _ground_action(a, key, env, effs, changing, fold, atom_id, prob, dom)
+        if action is not None:
+            actions.append(action)
+    goal = fold(prob.goal, {})
+    initial = {atom_ids[a] for a in prob.init if a in atom_ids}
+    task = GroundTask(prob.name, atoms, initial, actions, goal, prob.metric,
+                      stats={"reached_atoms": len(reached), "instantiated_actions": len(actions)})
+    task = fold_unchanging(task)
+    if relevance:
+        task = relevant(task)
+    task.stats.update({"atoms": len(task.atoms), "actions": len(task.actions)})
+    return task
+
+
+def _instantiated_effects(g: Grounder, raw: list, reached, init) -> tuple[set, list]:
+    """The effects of every reached binding, and which reached atoms can change at all
+    (an add of an atom false at the start, a delete of one true)."""
     changing: set = set()
     inst_effects = []
     for a, key, env in raw:
@@ -309,9 +324,13 @@ def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance
                 if e.add != (atom in init):
                     changing.add(atom)
         inst_effects.append(effs)
+    return changing, inst_effects
 
+
+def _folder(g: Grounder, changing: set, init, atom_id):
+    """`fold(f, env)`: a lifted formula grounded and simplified; atoms that cannot change
+    become constants."""
     def fold(f, env):
-        """Ground and simplify a lifted formula; atoms that cannot change become constants."""
         kind = f[0]
         if kind == "atom":
             atom = (f[1], tuple(env.get(t, t) for t in f[2]))
@@ -335,33 +354,27 @@ def ground(dom: Domain, prob: Problem, max_actions: int | None = None, relevance
                 parts.append(fold(f[2], env2))
             return _junction("or" if kind == "exists" else "and", parts)
         return f  # TRUE / FALSE
+    return fold
 
-    actions = []
-    for (a, key, env), effs in zip(raw, inst_effects):
-        pre = fold(a.pre, env)
-        if pre == FALSE:
+
+def _ground_action(a, key, env, effs: list, changing: set, fold, atom_id, prob: Problem, dom: Domain):
+    """The ground action of one binding, or None when its precondition folds to false or
+    it changes nothing (a self-loop, never part of a shortest plan)."""
+    pre = fold(a.pre, env)
+    if pre == FALSE:
+        return None
+    effects = []
+    for cond, env2, atom, add in effs:
+        if atom not in changing:
             continue
-        effects = []
-        for cond, env2, atom, add in effs:
-            if atom not in changing:
-                continue
-            c = fold(cond, env2) if cond != TRUE else TRUE
-            if c != FALSE:
-                effects.append((c, atom_id(atom), add))
-        effects = effective_effects(pre, effects)
-        if not effects:
-            continue    # changes nothing: a self-loop, never part of a shortest plan
-        cost = _cost(a, env, prob, dom) if use_costs else 1
-        actions.append(GroundAction("(" + " ".join((a.name, *key)) + ")", pre, effects, cost))
-    goal = fold(prob.goal, {})
-    initial = {atom_ids[a] for a in init if a in atom_ids}
-    task = GroundTask(prob.name, atoms, initial, actions, goal, use_costs,
-                      stats={"reached_atoms": len(reached), "instantiated_actions": len(actions)})
-    task = fold_unchanging(task)
-    if relevance:
-        task = relevant(task)
-    task.stats.update({"atoms": len(task.atoms), "actions": len(task.actions)})
-    return task
+        c = fold(cond, env2) if cond != TRUE else TRUE
+        if c != FALSE:
+            effects.append((c, atom_id(atom), add))
+    effects = effective_effects(pre, effects)
+    if not effects:
+        return None
+    cost = _cost(a, env, prob, dom) if prob.metric else 1
+    return GroundAction("(" + " ".join((a.name, *key)) + ")", pre, effects, cost)
 
 
 def effective_effects(pre, effects: list) -> list:
