@@ -75,7 +75,8 @@ def _die_with_parent() -> None:
 
 def _child_main(conn, function, item, memory_mb, orphan_kill) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})  # the pool forks with it held
+    signal.signal(signal.SIGALRM, signal.SIG_DFL)   # the pool forks with the parent's timer held
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})
     if orphan_kill:
         _die_with_parent()
     if memory_mb is not None:
@@ -185,13 +186,22 @@ def run_limited(function, item, limits: Limits, index: int = 0, prepare=None) ->
 def timer_held():
     """Hold back the budget's timer (solvers/limits.py: it fires again every 0.25 s once the
     time is spent) while a child is started and recorded, or children are killed and
-    reaped: a raise in between would leave one running. A signal that came meanwhile is
-    delivered after."""
-    held = threading.current_thread() is threading.main_thread()
-    if held:
-        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
+    reaped: a raise in between would leave one running. A signal that comes meanwhile is
+    noted, and its handler runs once the hold ends.
+
+    The handler itself is swapped out, not the signal blocked: the timer's signal goes to
+    the process, and blocking it in the main thread only sends it to another thread (a
+    server's, a library's), after which Python still runs the handler in the main thread.
+    That way a raise landed inside every slow kill of a sweep, which retried forever (CI
+    hung there with its children already dead)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    fired: list = []
+    old = signal.signal(signal.SIGALRM, lambda signum, frame: fired.append(signum))
     try:
         yield
     finally:
-        if held:
-            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})
+        signal.signal(signal.SIGALRM, signal.SIG_DFL if old is None else old)
+        if fired and callable(old):
+            old(signal.SIGALRM, None)

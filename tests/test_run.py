@@ -92,6 +92,38 @@ def test_a_spent_budget_stops_every_child_even_when_reaping_is_slow(monkeypatch)
     assert not multiprocessing.active_children()
 
 
+_SWEEP_WITH_A_THREAD = """
+import multiprocessing, threading, time
+from bcc.run import children, pool
+from bcc.solvers import Budget
+from bcc.solvers.limits import BudgetExceeded, hard_limits
+threading.Thread(target=time.sleep, args=(60,), daemon=True).start()   # a thread the timer's signal may go to
+kill = children.Child.kill
+def slow_kill(self):
+    time.sleep(0.4)          # longer than the timer's repeat
+    kill(self)
+children.Child.kill = slow_kill
+try:
+    with hard_limits(Budget(time_limit=0.3), grace=0.0):
+        for _ in pool.map_local(time.sleep, [30, 30, 30], 2, lambda item: children.Limits()):
+            pass
+except BudgetExceeded:
+    print("budget", len(multiprocessing.active_children()))
+"""
+
+
+def test_a_sweep_ends_while_another_thread_takes_the_timers_signal():
+    """With another thread alive (a server's, a library's: the whole suite has some), the
+    timer's signal went to that thread while the main thread blocked it, and Python ran the
+    handler in the main thread anyway: a raise landed in every slow kill and the sweep
+    retried forever (CI timed out there). In a child process, so a hang is a failure."""
+    import subprocess
+    import sys
+    proc = subprocess.run([sys.executable, "-c", _SWEEP_WITH_A_THREAD], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert proc.stdout.split() == ["budget", "0"], (proc.stdout, proc.stderr[-2000:])
+
+
 def test_a_raise_that_lands_inside_the_sweep_still_leaves_no_child(monkeypatch):
     """A signal that came just before the hold runs its handler inside it (seen in CI: a long
     garbage collection on a loaded machine, then both children left running); here the
