@@ -55,16 +55,40 @@ def hard_limits(budget: Budget, grace: float | None = None):
         # Python, so the timer fires again until the limit really ends the command.
         signal.setitimer(signal.ITIMER_REAL, budget.time_limit + grace, REPEAT_SECONDS)
     old_cap = arm_cap(budget.max_memory_mb) if budget.max_memory_mb is not None else None
+    start = time.monotonic()
     try:
         yield
     except MemoryError:
         raise BudgetExceeded("max_memory") from None
+    except ImportError as exc:
+        # The timer's raise inside an extension module's initialisation comes out as
+        # "ImportError: initialization failed" (seen in CI: `bcc train --time-limit 0.5`
+        # exited 3), with or without the raise chained to it.
+        which = _budget_in(exc)
+        if which is None and timer and time.monotonic() - start >= budget.time_limit:
+            which = "time_limit"
+        if which is None:
+            raise
+        raise BudgetExceeded(which) from None
     finally:
         if timer:
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, old_handler)
         if old_cap is not None:
             disarm_cap(old_cap)
+
+
+def _budget_in(exc: BaseException) -> str | None:
+    """The budget named by a BudgetExceeded (or a MemoryError) that `exc` was raised from."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        seen.add(id(exc))
+        if isinstance(exc, BudgetExceeded):
+            return exc.which
+        if isinstance(exc, MemoryError):
+            return "max_memory"
+        exc = exc.__cause__ or exc.__context__
+    return None
 
 
 class Deadline:

@@ -215,6 +215,32 @@ def test_a_swallowed_time_limit_fires_again():
     assert time.monotonic() - start < 2
 
 
+@pytest.mark.parametrize("chained", [True, False])
+def test_a_time_limit_spent_inside_an_import_is_the_budget(chained):
+    """The timer's raise inside an extension module's initialisation comes out as
+    "ImportError: initialization failed" (CI: `bcc train --time-limit 0.5` exited 3 that
+    way), chained to the raise or not: the budget ran out, not bcc."""
+    from bcc.solvers import Budget
+    from bcc.solvers.limits import BudgetExceeded, hard_limits
+    with pytest.raises(BudgetExceeded) as caught:
+        with hard_limits(Budget(time_limit=0.1), grace=0):
+            try:
+                time.sleep(5)
+            except BudgetExceeded as exc:
+                if chained:
+                    raise ImportError("initialization failed") from exc
+            raise ImportError("initialization failed")
+    assert caught.value.which == "time_limit"
+
+
+def test_an_import_error_within_the_limit_stays_one():
+    from bcc.solvers import Budget
+    from bcc.solvers.limits import hard_limits
+    with pytest.raises(ImportError):
+        with hard_limits(Budget(time_limit=30), grace=0):
+            raise ImportError("no module named nothing_here")
+
+
 def test_the_backup_timer_waits_half_a_second_or_two_percent_of_the_limit():
     from bcc.solvers import Budget
     from bcc.solvers.limits import hard_limits
