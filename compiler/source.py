@@ -205,7 +205,7 @@ else:
 def _plain_marks(root) -> None:
     """libyaml's marks as PyYAML's own Mark (name, index, line, column): the compiled-dungeon
     cache pickles the nodes, and its unpickler builds only plain data classes."""
-    made: dict = {}
+    made: dict = {}     # id of a C mark -> (that mark, kept so its id is not reused; its plain copy)
 
     def plain(mark):
         key = id(mark)
