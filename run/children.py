@@ -76,7 +76,6 @@ def _die_with_parent() -> None:
 def _child_main(conn, function, item, memory_mb, orphan_kill) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     signal.signal(signal.SIGALRM, signal.SIG_DFL)   # the pool forks with the parent's timer held
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGALRM})
     if orphan_kill:
         _die_with_parent()
     if memory_mb is not None:
