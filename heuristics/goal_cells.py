@@ -51,6 +51,7 @@ class GoalCells:
     min_move_cost: int
     writers_stay: bool                # no action both writes cells and moves the agent
     need_offsets: set = field(default_factory=set)   # every relative need offset
+    complete: bool = False            # every cell write of every action is an achiever
 
     def standing(self, atom) -> list:
         """The agent positions from which some achiever writes this atom's value."""
@@ -140,6 +141,7 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
         return None
     axes = {v: i for i, v in enumerate(c.position_vars)} if len(c.position_vars) == 3 else {}
     achievers, max_writes, write_costs, move_costs, steps, stay = {}, 0, [], [], [], True
+    complete = True
     for index in c.search:
         act = c.actions[index]
         lets = {loc.name: expr for loc, expr in act.lets}
@@ -153,6 +155,7 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
         max_writes = max(max_writes, writes)
         write_costs.append(act.cost)
         stay = stay and not moves
+        complete = complete and not any(isinstance(e, ir.When) and _count_writes((e,)) for e in act.effects)
         needs = []          # clauses: some literal (offset, op, value) of each holds
         for p in ir.conjuncts(act.pre):
             alternatives = p.items if isinstance(p, ir.BoolOp) and p.op == "or" else (p,)
@@ -163,7 +166,7 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
             if isinstance(e, ir.SetCell):
                 w = _offset(e, lets, axes)
                 if w is None:
-                    stay = False   # a write the standing places cannot describe: no walking bound
+                    stay = complete = False   # a write the standing places cannot describe: no walking bound
                     continue
                 value = int(e.value.value) if isinstance(e.value, ir.Const) else None
                 rel = tuple(tuple(((o[0] - w[0], o[1] - w[1], o[2] - w[2]), op, v) for o, op, v in clause)
@@ -177,6 +180,7 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
     out = GoalCells(atoms, rest, achievers, max(max_writes, 1), min(write_costs, default=1), step,
                     min(move_costs, default=1), stay and bool(axes))
     out.need_offsets = {n[0] for lst in achievers.values() for a in lst for c in a.needs for n in c}
+    out.complete = complete
     model.memo["goal_cells"] = out
     return out
 

@@ -20,7 +20,8 @@ short of the goal, and the shorter plan made of what it found.
   of the budget from the state reached only where a search may help: the goal has a
   conjunct other than cell atoms and amounts to gather (which the builder does not
   pursue), an atom waits for a value that no gathering walk raised (it must be made from
-  others), or at most FALLBACK_UP_TO atoms are left and no amount is short. Otherwise the
+  others), or at most FALLBACK_UP_TO atoms are left and no amount is short; never where an
+  atom left can never hold from there (heuristics/cell_reach.py). Otherwise the
   run ends with no plan (`no_solution`; its message says the builder is not complete):
   on a world of any size gbfs's relaxed view alone takes longer than the builder did.
 - **Shorter plans.** Greedy action elimination (solvers/shorten.py) on plans of at most
@@ -30,6 +31,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from ..heuristics.cell_reach import never_hold
 from .base import Budget, Result, budget_result
 from .shorten import eliminate
 
@@ -55,6 +57,8 @@ def _amount(node) -> bool:
 def search_may_help(builder, state) -> bool:
     """Whether the gbfs fallback runs from `state`, where serialising stopped (the rule
     in the module docstring)."""
+    if never_hold(builder.cells, builder.model, state, builder.read):
+        return False   # proved: no search can reach the goal from here
     if any(not _amount(g) for g in builder.cells.rest):
         return True
     sup = builder.supplies
@@ -67,6 +71,10 @@ def search_may_help(builder, state) -> bool:
 def gave_up(builder, state) -> str:
     sup = builder.supplies
     short = sup.short(state, (), builder.wanted) if sup else {}
+    never = never_hold(builder.cells, builder.model, state, builder.read)
+    if never:
+        return (f"the build solver stopped where {len(never)} goal cell atom(s) can no longer be written "
+                f"(first: {never[0][0]}): it is not complete; --solver gbfs searches the whole space")
     return (f"the build solver stopped with {builder.goal_left()} goal cell atom(s) unwritten and {len(short)} "
             "amount(s) short: it is not complete; --solver gbfs searches the whole space")
 
