@@ -15,7 +15,9 @@ these, relative to a goal cell p:
   than q's goal value (writing q first would make p unreachable);
 - an *admissible lower bound*: each unsatisfied atom needs an action that writes it,
   an action writes at most `max_writes` cells, and none costs less than `min_write_cost`;
-  when writing never moves the agent, the agent must also first reach a standing place.
+  when writing never moves the agent, the agent must also first reach a standing place,
+  and it must stand in as many distinct places as there are atoms with pairwise disjoint
+  standing places (`_places_to_visit`).
 
 Nothing here knows what the cells or values mean; it reads only IR shapes.
 """
@@ -278,8 +280,29 @@ def lower_bound(cells: GoalCells, model, state, read=None) -> int:
         places = [p for a in todo for p in cells.standing(a)]
         if places and all(cells.achievers.get(a[1]) for a in todo):
             far = min(sum(abs(i - j) for i, j in zip(here, p)) for p in places)
-            bound += math.ceil(far / cells.step) * cells.min_move_cost
+            moves = math.ceil(far / cells.step)
+            if cells.complete:
+                moves = max(moves, _places_to_visit(cells, todo, here))
+            bound += moves * cells.min_move_cost
     return bound
+
+
+def _places_to_visit(cells: GoalCells, todo: list, here: tuple) -> int:
+    """Moves the agent must make, at least, to stand where the atoms of `todo` are written:
+    atoms whose standing places are pairwise disjoint are written from that many distinct
+    places (no writer moves the agent, and every write is an achiever), so the agent
+    occupies them all and changes place at least once per place beyond the first (or per
+    place, when it starts on none of them). The atoms are picked greedily, fewest standing
+    places first; any such set gives a bound, a larger one a better bound."""
+    standing = sorted((sorted(set(cells.standing(a))), a[0]) for a in todo)
+    standing.sort(key=lambda r: len(r[0]))
+    used, chosen = set(), 0
+    for places, _ in standing:
+        if not used.isdisjoint(places):
+            continue
+        used.update(places)
+        chosen += 1
+    return chosen - (1 if here in used else 0)
 
 
 def support_levels(cells: GoalCells, read, state) -> dict:
