@@ -221,12 +221,16 @@ class _Builder:
         of `places`, changing no protected atom and spending nothing `floor` keeps (except
         on the last step): (path, "ok" | "failed" | budget name)."""
         agent = self.model.agent_position
+        near = {}   # position -> 1 + its distance to the nearest place (states share positions)
 
         def h(s):
             if done(s):
                 return 0
             here = agent(s)
-            return 1 + min((_distance(here, p) for p in places), default=0)
+            v = near.get(here)
+            if v is None:
+                v = near[here] = 1 + min((_distance(here, p) for p in places), default=0)
+            return v
 
         tie = itertools.count()
         parents = {state: None}
