@@ -14,7 +14,7 @@ questions gives no answer. Nothing here knows what the cells or values mean.
 """
 from __future__ import annotations
 
-from .goal_cells import _OPS, GoalCells
+from .goal_cells import _OPS, CellReader, GoalCells, goal_cells
 
 LIMIT = 200_000   # questions (cell, op, value) the backward graph may hold
 
@@ -91,3 +91,14 @@ def never_message(model, never: list) -> str:
     more = f" and {len(never) - 3} more" if len(never) > 3 else ""
     return (f"no plan exists: no sequence of actions can put {shown}{more} (even ignoring where the agent "
             "must stand and what it carries, what each write needs beneath or beside it never holds)")
+
+
+def goal_never_holds(model) -> str | None:
+    """What a user is told when some goal cell atom can never hold from the model's start
+    (`never_message`), else None: also when the goal has no cell atom, the model is not a
+    compiled dungeon, or the analysis cannot tell."""
+    cells = goal_cells(model)
+    if cells is None:
+        return None
+    never = never_hold(cells, model, model.initial, CellReader(model))
+    return never_message(model, never) if never else None

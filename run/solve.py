@@ -5,9 +5,10 @@ around a solver, in this order: check the options against the solver's declarati
 options are bad input before anything runs), fill in the default memory budget (half the
 machine), start one deadline that loading the model, a reference search and the solve
 share, back the budget with hard limits (a timer and an address-space cap; a job process
-that caps itself says `hard=False`), load the model, give a solver that declares
-`optimal_cost` A*'s cost within half the time left (a learner's `converged_episode` is
-measured against it), and solve. A budget spent outside the solver's own checks
+that caps itself says `hard=False`), load the model, end with no plan at once when some
+goal cell atom can never hold (heuristics/cell_reach.py: proved, whatever the solver),
+give a solver that declares `optimal_cost` A*'s cost within half the time left (a
+learner's `converged_episode` is measured against it), and solve. A budget spent outside the solver's own checks
 (compiling, a heuristic's table) still ends as a Result with status "budget".
 
 What is loaded is usually a `Model` (a dungeon, a grounded PDDL task); it may be another
@@ -21,8 +22,10 @@ import contextlib
 from dataclasses import dataclass, field
 from typing import Callable
 
+from ..heuristics.cell_reach import goal_never_holds
 from ..model import Model
 from ..solvers import Budget, Result, check_options, default_solver, get_solver, optimal_cost
+from ..solvers.base import Meter
 from ..solvers.limits import BudgetExceeded, Deadline, exceeded_result, hard_limits
 from ..solvers.options import keywords_of
 
@@ -68,9 +71,13 @@ def run(request: Request) -> Ran:
             if request.pick and is_model and default_solver(model) != solver:
                 solver = default_solver(model)
                 solve = get_solver(solver)
-            if is_model and "optimal_cost" in keywords_of(get_solver(solver)):
-                options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
-            result = solve(model, deadline.remaining(request.search_share), progress=request.progress, **options)
+            never = goal_never_holds(model) if is_model else None
+            if never:   # proved before any search: every solver would end with no plan
+                result = Meter(budget).finish(Result(solver=solver, solved=False, status="no_solution", message=never))
+            else:
+                if is_model and "optimal_cost" in keywords_of(get_solver(solver)):
+                    options["optimal_cost"] = optimal_cost(model, deadline.remaining(share=0.5))
+                result = solve(model, deadline.remaining(request.search_share), progress=request.progress, **options)
     except BudgetExceeded as exc:
         result = exceeded_result(solver, exc.which, deadline)
     return Ran(result, model)

@@ -6,6 +6,7 @@ state space of small random builder worlds (every case it exhausts has no plan).
 that BFS contradicts would be a wrong "no plan"."""
 from __future__ import annotations
 
+import json
 import random
 import subprocess
 import sys
@@ -63,6 +64,18 @@ def test_the_build_solver_ends_at_once_with_exit_1_and_says_where(tmp_path):
     assert out.returncode == 1 and out.stdout == ""
     assert "no plan exists" in out.stderr and "stone at (4, 3, 0)" in out.stderr and "(1, 1, 0)" not in out.stderr
     assert "0 expanded" in out.stderr
+
+
+@pytest.mark.parametrize("solver", ["astar", "gbfs", "bfs", "qlearning"])
+def test_every_solver_run_from_the_cli_ends_at_once_on_a_goal_that_can_never_hold(tmp_path, solver):
+    path = tmp_path / "gap.yaml"
+    path.write_text(_text(5, 1, 6, FLOOR, (0, 1, 0), "block[4, 3, 0].kind == stone", {"stone": 3}))
+    out = subprocess.run([sys.executable, "-m", "bcc", "solve", str(path), "--solver", solver, "--json",
+                          "--time-limit", "60"], capture_output=True, text=True)
+    assert out.returncode == 1, out.stderr
+    result = json.loads(out.stdout)
+    assert result["solver"] == solver and result["status"] == "no_solution" and result["expanded"] == 0
+    assert result["message"].startswith("no plan exists: no sequence of actions can put stone at (4, 3, 0)")
 
 
 def test_an_incomplete_view_of_the_writes_gives_no_answer(tmp_path):
