@@ -294,10 +294,9 @@ def _places_to_visit(cells: GoalCells, todo: list, here: tuple) -> int:
     occupies them all and changes place at least once per place beyond the first (or per
     place, when it starts on none of them). The atoms are picked greedily, fewest standing
     places first; any such set gives a bound, a larger one a better bound."""
-    standing = sorted((sorted(set(cells.standing(a))), a[0]) for a in todo)
-    standing.sort(key=lambda r: len(r[0]))
+    standing = sorted((sorted(set(cells.standing(a))) for a in todo), key=lambda r: (len(r), r))
     used, chosen = set(), 0
-    for places, _ in standing:
+    for places in standing:
         if not used.isdisjoint(places):
             continue
         used.update(places)

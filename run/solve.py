@@ -8,8 +8,9 @@ share, back the budget with hard limits (a timer and an address-space cap; a job
 that caps itself says `hard=False`), load the model, end with no plan at once when some
 goal cell atom can never hold (heuristics/cell_reach.py: proved, whatever the solver),
 give a solver that declares `optimal_cost` A*'s cost within half the time left (a
-learner's `converged_episode` is measured against it), and solve. A budget spent outside the solver's own checks
-(compiling, a heuristic's table) still ends as a Result with status "budget".
+learner's `converged_episode` is measured against it), and solve. A budget spent outside
+the solver's own checks (compiling, a heuristic's table) still ends as a Result with
+status "budget".
 
 What is loaded is usually a `Model` (a dungeon, a grounded PDDL task); it may be another
 task a solver reads (an HDDL task network, a PDDL task too big to ground, searched

@@ -22,7 +22,7 @@ import heapq
 import itertools
 import random
 
-from ..heuristics.cell_reach import never_hold, never_message
+from ..heuristics.cell_reach import goal_never_holds
 from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound, orders, ready, support_levels
 from ..heuristics.supplies import supplies, wanted
 from .access import Access, exit_orders
@@ -581,10 +581,9 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
         result = get_solver("gbfs")(model, budget, progress)
         result.solver = NAME
         return result
-    never = never_hold(cells, model, model.initial, CellReader(model))
-    if never:   # a relaxation proves it: no try, no fallback
-        return meter.finish(Result(solver=NAME, solved=False, status="no_solution",
-                                   message=never_message(model, never), expanded=0, generated=0, stored=0))
+    never = goal_never_holds(model)
+    if never:   # a relaxation proves it (also asked by the run path; a library caller gets it here)
+        return meter.finish(Result(solver=NAME, solved=False, status="no_solution", message=never))
     run = serialise(model, lambda seed, keep, ahead, try_meter: _Builder(model, cells, try_meter, budget, local_limit,
                                                                          seed, keep, ahead),
                     meter, budget)

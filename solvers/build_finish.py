@@ -54,10 +54,17 @@ def _amount(node) -> bool:
         and all(op in ("<=", "<", ">=", ">") for op in node.ops)
 
 
+def _never(builder, state) -> list:
+    """The goal's atoms (planned supports aside) that can never hold from `state`."""
+    cells = builder.cells
+    goal = dataclasses.replace(cells, atoms=[a for a in cells.atoms if a[0] in builder.goal])
+    return never_hold(goal, builder.model, state, builder.read) or []
+
+
 def search_may_help(builder, state) -> bool:
     """Whether the gbfs fallback runs from `state`, where serialising stopped (the rule
     in the module docstring)."""
-    if never_hold(builder.cells, builder.model, state, builder.read):
+    if _never(builder, state):
         return False   # proved: no search can reach the goal from here
     if any(not _amount(g) for g in builder.cells.rest):
         return True
@@ -71,7 +78,7 @@ def search_may_help(builder, state) -> bool:
 def gave_up(builder, state) -> str:
     sup = builder.supplies
     short = sup.short(state, (), builder.wanted) if sup else {}
-    never = never_hold(builder.cells, builder.model, state, builder.read)
+    never = _never(builder, state)
     if never:
         return (f"the build solver stopped where {len(never)} goal cell atom(s) can no longer be written "
                 f"(first: {never[0][0]}): it is not complete; --solver gbfs searches the whole space")

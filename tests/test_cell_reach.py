@@ -6,6 +6,7 @@ state space of small random builder worlds (every case it exhausts has no plan).
 that BFS contradicts would be a wrong "no plan"."""
 from __future__ import annotations
 
+import dataclasses
 import json
 import random
 import subprocess
@@ -125,3 +126,22 @@ def test_never_is_never_contradicted_by_exhaustive_search(tmp_path):
             nevers += 1
             assert not bfs.solved, (seed, path.read_text(), bfs.plan)
     assert exhausted >= 50 and nevers >= 20 and solved >= 5, (exhausted, nevers, solved)
+
+
+def test_the_fallback_rule_asks_about_the_goal_not_the_planned_supports(tmp_path):
+    # The builder may add atoms of its own (planned supports) to what it serialises: one
+    # that can never hold must not make the rule say the goal cannot be reached, while a
+    # goal atom that can never hold from where the tries stopped does.
+    from bcc.solvers.build import _Builder
+    from bcc.solvers.build_finish import _never, search_may_help
+    from bcc.solvers.base import Meter
+    path = tmp_path / "column.yaml"
+    path.write_text(_text(5, 1, 5, FLOOR, (0, 1, 0), "block[3, 2, 0].kind == stone", {"stone": 3}))
+    model = compile_dungeon(str(path))
+    cells = goal_cells(model)
+    b = _Builder(model, cells, Meter(Budget()), Budget(), 100)
+    stone = model.grid.value_names.index("stone")
+    b.cells = dataclasses.replace(cells, atoms=[*cells.atoms, ((4, 2, 0), stone)])   # over the gap
+    assert _never(b, model.initial) == [] and search_may_help(b, model.initial)
+    b.goal.add((4, 2, 0))
+    assert _never(b, model.initial) == [((4, 2, 0), stone)] and not search_may_help(b, model.initial)
