@@ -96,9 +96,12 @@ def never_message(model, never: list) -> str:
 def goal_never_holds(model) -> str | None:
     """What a user is told when some goal cell atom can never hold from the model's start
     (`never_message`), else None: also when the goal has no cell atom, the model is not a
-    compiled dungeon, or the analysis cannot tell."""
-    cells = goal_cells(model)
-    if cells is None:
-        return None
-    never = never_hold(cells, model, model.initial, CellReader(model))
-    return never_message(model, never) if never else None
+    compiled dungeon, or the analysis cannot tell. Kept in the model's memo by start state
+    (a model copied with another start shares the memo): the run path asks it, and so does
+    the build solver for a library caller."""
+    known = model.memo.setdefault("goal_never_holds", {})
+    if model.initial not in known:
+        cells = goal_cells(model)
+        never = never_hold(cells, model, model.initial, CellReader(model)) if cells is not None else None
+        known[model.initial] = never_message(model, never) if never else None
+    return known[model.initial]

@@ -145,3 +145,15 @@ def test_the_fallback_rule_asks_about_the_goal_not_the_planned_supports(tmp_path
     assert _never(b, model.initial) == [] and search_may_help(b, model.initial)
     b.goal.add((4, 2, 0))
     assert _never(b, model.initial) == [((4, 2, 0), stone)] and not search_may_help(b, model.initial)
+
+
+def test_the_answer_is_kept_per_start_state(tmp_path):
+    # A model copied with another start shares its memo: the answer must be the new start's.
+    from bcc.heuristics.cell_reach import goal_never_holds
+    path = tmp_path / "column.yaml"
+    path.write_text(_text(5, 1, 5, FLOOR, (0, 1, 0), "block[3, 1, 0].kind == stone", {"stone": 1}))
+    model = compile_dungeon(str(path))
+    assert goal_never_holds(model) is None
+    walled = model.apply(model.action_index("move_east"), model.initial)   # any other start
+    other = dataclasses.replace(model, initial=walled)
+    assert other.memo is model.memo and goal_never_holds(other) is None and len(model.memo["goal_never_holds"]) == 2
