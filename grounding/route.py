@@ -28,6 +28,7 @@ import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from . import steps as step_list
 from .text import Speller
 from .world import World, world_of
 
@@ -51,6 +52,7 @@ class Scene:
     world: World
     agent: str | None              # the agent's room at the start (None: in no room)
     things: tuple                  # ((thing, its room at the start), ...)
+    cells: tuple | None = None     # (position, facing, {thing: position}) on the map (world.Cells.at)
 
 
 def scene_of(space, state: bytes | None = None) -> Scene | None:
@@ -66,7 +68,7 @@ def scene(world: World | None, space, state: bytes) -> Scene | None:
     agent = next((r for r, a in world.room_atoms.items() if space.predicates.predicate(a)(state)), None)
     things = tuple((t, next((r for r, a in by_room.items() if space.predicates.predicate(a)(state)), None))
                    for t, (_, by_room) in sorted(world.things.items()))
-    return Scene(world, agent, things)
+    return Scene(world, agent, things, world.map.at(space.model, state) if world.map is not None else None)
 
 
 @dataclass(frozen=True)
@@ -255,13 +257,19 @@ def _modifier(toks: list, i: int, lex: dict, door: bool) -> str:
     return "plain"
 
 
-def read(command: str, scene_: Scene | None) -> list[tuple[float, Outcome]] | None:
+def read(command: str, scene_: Scene | None, beta: float = step_list.BETAS[1]) -> list[tuple[float, Outcome]] | None:
     """The outcomes of the route the command describes, with their shares (summing to 1),
-    or None when the command names no room, door, thing or way back."""
+    or None when the command names no room, door, thing, way back or step. A command that
+    gives two steps or more, or a count ("go down four, left five"), or a step and no room,
+    is walked on the map (steps.py; `beta` weighs its faults)."""
     if scene_ is None:
         return None
     world = scene_.world
     route = steps(command, world)
+    said = step_list.moves(command, world.map.compass) if world.map is not None else []
+    walks = [m for m in said if not m.way.startswith("turn-")]
+    if walks and (len(walks) >= 2 or any(m.count is not None for m in walks) or not any(m for _, m in route)):
+        return _walked(command, scene_, beta)
     if not any(m for _, m in route):
         return None
     named = {m.value for _, ms in route for m in ms if m.kind == "room" and m.how == "named"}
@@ -284,6 +292,20 @@ def read(command: str, scene_: Scene | None) -> list[tuple[float, Outcome]] | No
             ends[o] = ends.get(o, 0.0) + w * share
     total = sum(ends.values())
     return sorted(((w / total, o) for o, w in ends.items()), key=lambda x: -x[0])
+
+
+def _walked(command: str, scene_: Scene, beta: float) -> list[tuple[float, Outcome]] | None:
+    """The outcomes of the command read as steps on the map (steps.py)."""
+    start = dict(scene_.things)
+    ends = step_list.read(command, scene_.world.map, scene_.cells, beta)
+    if ends is None:
+        return None
+    out = []
+    for share, e in ends:
+        pushed = dict(e.things)
+        things = tuple((t, pushed.get(t, r), pushed.get(t, r) != r) for t, r in scene_.things)
+        out.append((share, Outcome(e.agent, e.agent_moved, things, frozenset())))
+    return out
 
 
 def _merge(pairs) -> dict:

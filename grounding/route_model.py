@@ -23,6 +23,7 @@ from scipy.optimize import minimize
 from ..errors import BccError
 from .model_file import JsonModelFile, expect_format
 from .route import Scene, read
+from .steps import BETAS
 
 FORMAT = "bcc-route/1"
 L2 = 0.01                  # penalty per weight on the mean log-likelihood
@@ -72,13 +73,14 @@ def features(task: str, outcomes: list, scene: Scene) -> dict:
 class RouteModel(JsonModelFile):
     reads_world = True
 
-    def __init__(self, weights: dict):
+    def __init__(self, weights: dict, beta: float = BETAS[1]):
         self.weights = dict(weights)
+        self.beta = float(beta)       # the weight of one fault of a command given as steps (steps.py)
         self.iterations = 0
 
     def log_posterior(self, command: str, tasks: list[str], scene: Scene | None = None) -> list[float] | None:
         """log P(task | command) over `tasks`, or None when the command is no route there."""
-        outcomes = read(command, scene)
+        outcomes = read(command, scene, self.beta)
         if outcomes is None:
             return None
         s = np.array([sum(self.weights.get(k, 0.0) * v for k, v in features(t, outcomes, scene).items())
@@ -89,44 +91,15 @@ class RouteModel(JsonModelFile):
     @classmethod
     def train(cls, examples: list, scenes: list | None = None, l2: float = L2) -> RouteModel:
         """Fit the weights to `examples` [(command, candidates, {task: weight})] whose command
-        reads as a route in its scene (`scenes[k]`, parallel to the examples)."""
-        rows = []
-        for k, (command, candidates, target) in enumerate(examples):
-            scene = scenes[k] if scenes else None
-            outcomes = read(command, scene)
-            if outcomes is None:
-                continue
-            rows.append(([features(t, outcomes, scene) for t in candidates],
-                         np.array([float(target.get(t, 0.0)) for t in candidates])))
-        index = {f: i for i, f in enumerate(sorted({f for fs, _ in rows for d in fs for f in d}))}
-        if not rows or not index:
-            return cls({})
-        blocks = []
-        for fs, y in rows:
-            X = np.zeros((len(fs), len(index)))
-            for j, d in enumerate(fs):
-                for f, v in d.items():
-                    X[j, index[f]] = v
-            blocks.append((X, y / y.sum() if y.sum() > 0 else y))
-        n = len(blocks)
-
-        def value_and_gradient(w):
-            loss, grad = 0.0, np.zeros(len(index))
-            for X, y in blocks:
-                z = X @ w
-                z -= z.max()
-                p = np.exp(z)
-                p /= p.sum()
-                loss -= float(y @ np.log(np.maximum(p, 1e-300)))
-                grad -= X.T @ (y - p * y.sum())
-            return loss / n + l2 * float(w @ w), grad / n + 2 * l2 * w
-        fit = minimize(value_and_gradient, np.zeros(len(index)), jac=True, method="L-BFGS-B")
-        model = cls({f: round(float(fit.x[i]), 6) for f, i in index.items() if abs(fit.x[i]) > 1e-9})
-        model.iterations = int(fit.nit)
+        reads as a route in its scene (`scenes[k]`, parallel to the examples), and the weight
+        of a fault in commands given as steps: the one of `BETAS` whose fit is the most
+        likely (a parameter like the others, fitted to the training pairs alone)."""
+        fits = [_fit(examples, scenes, l2, beta) for beta in BETAS]
+        loss, model = min(fits, key=lambda f: f[0])
         return model
 
     def to_json(self) -> dict:
-        return {"format": FORMAT, "weights": self.weights}
+        return {"format": FORMAT, "weights": self.weights, "beta": self.beta}
 
     @classmethod
     def from_json(cls, data, path: str | None = None) -> RouteModel:
@@ -135,4 +108,46 @@ class RouteModel(JsonModelFile):
         if not isinstance(weights, dict) or any(isinstance(v, bool) or not isinstance(v, (int, float))
                                                 for v in weights.values()):
             raise BccError("malformed grounding model: \"weights\" must map features to numbers", path)
-        return cls(weights)
+        beta = data.get("beta", BETAS[1])
+        if isinstance(beta, bool) or not isinstance(beta, (int, float)) or not 0 < beta < 1e6:
+            raise BccError("malformed grounding model: \"beta\" must be a positive number", path)
+        return cls(weights, beta)
+
+
+def _fit(examples: list, scenes: list | None, l2: float, beta: float) -> tuple[float, RouteModel]:
+    """(the penalised mean negative log-likelihood, the model) of the weights fitted with
+    steps read at `beta`."""
+    rows = []
+    for k, (command, candidates, target) in enumerate(examples):
+        scene = scenes[k] if scenes else None
+        outcomes = read(command, scene, beta)
+        if outcomes is None:
+            continue
+        rows.append(([features(t, outcomes, scene) for t in candidates],
+                     np.array([float(target.get(t, 0.0)) for t in candidates])))
+    index = {f: i for i, f in enumerate(sorted({f for fs, _ in rows for d in fs for f in d}))}
+    if not rows or not index:
+        return 0.0, RouteModel({}, beta)
+    blocks = []
+    for fs, y in rows:
+        X = np.zeros((len(fs), len(index)))
+        for j, d in enumerate(fs):
+            for f, v in d.items():
+                X[j, index[f]] = v
+        blocks.append((X, y / y.sum() if y.sum() > 0 else y))
+    n = len(blocks)
+
+    def value_and_gradient(w):
+        loss, grad = 0.0, np.zeros(len(index))
+        for X, y in blocks:
+            z = X @ w
+            z -= z.max()
+            p = np.exp(z)
+            p /= p.sum()
+            loss -= float(y @ np.log(np.maximum(p, 1e-300)))
+            grad -= X.T @ (y - p * y.sum())
+        return loss / n + l2 * float(w @ w), grad / n + 2 * l2 * w
+    fit = minimize(value_and_gradient, np.zeros(len(index)), jac=True, method="L-BFGS-B")
+    model = RouteModel({f: round(float(fit.x[i]), 6) for f, i in index.items() if abs(fit.x[i]) > 1e-9}, beta)
+    model.iterations = int(fit.nit)
+    return float(fit.fun), model

@@ -25,6 +25,7 @@ from collections import deque
 from dataclasses import dataclass, field
 
 WALK_STATES = 50000     # states the walk search may visit (a large map's rooms are still found)
+GRID_CELLS = 200000     # a larger grid is not searched for the things a command may push
 
 
 @dataclass(frozen=True)
@@ -32,6 +33,28 @@ class Door:
     index: int                  # doors are numbered by their distance from the agent's start
     rooms: frozenset            # the rooms it joins
     position: tuple             # one position of it (the one nearest the start)
+
+
+@dataclass(frozen=True)
+class Cells:
+    """The map as someone giving steps sees it: which positions the agent can stand on and
+    their rooms, where it starts, the step each compass direction takes, and the positions
+    of the things it can push."""
+    room: dict                  # position -> its room (None: in no room, e.g. a door): where one may stand
+    start: tuple                # the agent's position at the start
+    compass: dict               # facing name (north, ...) -> the position step of moving while facing it
+    facing: str | None          # the agent's facing at the start
+    things: dict                # thing -> its position at the start (things found in one cell only)
+    axes: tuple = ()            # ((state index, axis name, low), ...) of the agent's position
+    turn: tuple = ()            # (state index, low, {value: facing name}) of the agent's facing
+
+    def at(self, model, state: bytes) -> tuple:
+        """(the agent's position, its facing, {thing: position}) in `state`."""
+        if state == model.initial or not self.axes:
+            return self.start, self.facing, self.things
+        index, lo, names = self.turn
+        return (tuple(state[i] for i, _, _ in self.axes), names.get(state[index] + lo),
+                _thing_positions(model, state, self.things, self.axes))
 
 
 @dataclass
@@ -42,6 +65,7 @@ class World:
     doors: list                 # [Door], nearest the start first
     neighbours: dict = field(default_factory=dict)   # room -> {room: [door indices] ([] : open)}
     distance: dict = field(default_factory=dict)     # room -> walk steps from the start position to it
+    map: Cells | None = None    # its cells, for commands given as steps (steps.py)
 
     def words(self) -> frozenset:
         """Every word that names something of this world (a room or a thing)."""
@@ -97,9 +121,9 @@ def read_world(space) -> World | None:
         if room is None or thing is None:
             continue
         things.setdefault(thing, {})[room] = atom
-    things = {t: (frozenset(name_words(t)), {r: a.text for r, a in by_room.items()})
-              for t, by_room in things.items()
-              if sum(space.holds(a, start) for a in by_room.values()) == 1}
+    things = {t: by_room for t, by_room in things.items() if sum(space.holds(a, start) for a in by_room.values()) == 1}
+    thing_rooms = {t: next(r for r, a in by_room.items() if space.holds(a, start)) for t, by_room in things.items()}
+    things = {t: (frozenset(name_words(t)), {r: a.text for r, a in by_room.items()}) for t, by_room in things.items()}
     walk = _walk(space)
     room_of = {p: next((r for r, a in room_atoms.items() if space.holds(a, s)), None) for p, s in walk.states.items()}
     doors, neighbours = _doors(walk, room_of, set(room_atoms))
@@ -109,7 +133,76 @@ def read_world(space) -> World | None:
         if r is not None and d < distance.get(r, 1 << 30):
             distance[r] = d
     return World({r: rooms[r] for r in room_atoms}, {r: a.text for r, a in room_atoms.items()}, things,
-                 doors, neighbours, distance)
+                 doors, neighbours, distance, _cells(space, walk, room_of, thing_rooms))
+
+
+def _cells(space, walk: _Walk, room_of: dict, thing_rooms: dict) -> Cells | None:
+    """The map's cells (Cells), or None when moving does not follow a facing with names.
+    A thing's cell counts as one the agent may stand on (once the thing is pushed on), in
+    the thing's room."""
+    from ..compiler import ir, pipeline as c
+    dungeon = space.predicates.dungeon
+    layout = space.predicates._layout
+    model = space.model
+    cls = dungeon.objects[dungeon.agent_name][0]
+    attr = (dungeon.domain.binding.get("agent_fields") or {}).get("facing")
+    adef = dungeon.domain.classes[cls].attrs.get(attr) if attr else None
+    slot = layout.by_var.get(ir.StateVar(dungeon.agent_name, cls, attr, adef.type)) if adef else None
+    if slot is None or not adef.names:
+        return None
+    position, _, variables = c._position(dungeon, layout)
+    axes = [(var.attr, dyn) for var, dyn in zip(variables, position) if dyn is not None]
+    compass = {}
+    for name, value in adef.names.items():
+        for s in list(walk.states.values())[:64]:
+            t = _moved(model, s[:slot.index] + bytes([value - slot.lo]) + s[slot.index + 1:], [i for _, (i, _) in axes])
+            if t is not None:
+                compass[name] = t
+                break
+    if len(compass) < 2:
+        return None
+    start = model.initial
+    facing = next((n for n, v in adef.names.items() if v - slot.lo == start[slot.index]), None)
+    axes = tuple((i, name, lo) for name, (i, lo) in axes)
+    things = _thing_positions(model, start, thing_rooms, axes)
+    rooms = dict(room_of)
+    rooms.update({p: thing_rooms[t] for t, p in things.items()})
+    return Cells(rooms, tuple(start[i] for i, _, _ in axes), compass, facing, things, axes,
+                 (slot.index, slot.lo, {v: n for n, v in adef.names.items()}))
+
+
+def _moved(model, state: bytes, index: list) -> tuple | None:
+    """The position step of the first action that moves the agent one cell and changes
+    nothing else but its position, or None."""
+    for i in range(len(model.action_names)):
+        t = model.apply(i, state)
+        if t is None or model.is_failure(t):
+            continue
+        step = tuple(t[k] - state[k] for k in index)
+        if sum(map(abs, step)) == 1 and all(t[k] == state[k] for k in range(len(state)) if k not in index):
+            return step
+    return None
+
+
+def _thing_positions(model, state: bytes, things, axes: tuple) -> dict:
+    """{thing: position} in `state` for each of `things` named by a grid value found in
+    exactly one cell, in the agent's position coordinates (the same axis names)."""
+    grid = model.grid
+    if grid.width * grid.depth * grid.height > GRID_CELLS:
+        return {}
+    names = {n: v for v, n in enumerate(grid.value_names)}
+    out = {}
+    for thing in things:
+        if thing not in names:
+            continue
+        cells = [(x, y, z) for y in range(grid.height) for z in range(grid.depth) for x in range(grid.width)
+                 if grid.cell(state, x, y, z) == names[thing]]
+        if len(cells) != 1:
+            continue
+        where = dict(zip("xyz", cells[0]))
+        if all(a in where for _, a, _ in axes):
+            out[thing] = tuple(where[a] - lo for _, a, lo in axes)
+    return out
 
 
 @dataclass

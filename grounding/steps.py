@@ -1,0 +1,248 @@
+"""A command given as steps on the map -- "go down four, left five, up two" -- and where it ends.
+
+People who give steps count cells and name directions on the map as they see it; where
+the steps end (the agent's room, and the room of a thing it pushed on the way) says what
+they ask. The reader walks the steps over the dungeon's cells (world.Cells: the positions
+the agent can stand on, their rooms, the step each compass direction takes), pushing a
+thing one cell on when the agent walks into it, as a robot pushes a chair.
+
+People miscount ("give or take one"), some read the picture mirrored (left for right, or
+the robot's south as north), and some give no count ("go down, then left"): the reader
+follows every reading -- each count one more or one less, each mirrored frame, a
+direction without a count as far as it goes -- and weighs each by exp(-beta x its
+faults): a count off by one, a step into a wall, a mirrored axis. What it answers is a
+distribution over where the steps end; route_model.py learns which tasks such ends go
+with, and fits beta among `BETAS` to its training pairs.
+
+Direction words are in route_words.yaml ("up" is north: the map drawn with north up); the
+compass names are the domain's names of the agent's facing.
+"""
+from __future__ import annotations
+
+import functools
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+WORDS = Path(__file__).with_name("route_words.yaml")
+BETAS = (1.0, 2.0, 4.0)    # the weights of one fault route_model.py chooses among
+BEAM = 64                  # readings followed at once (the heaviest kept)
+NEAR = 3                   # a count stands at most this many words from its direction
+TOKEN = re.compile(r"[a-z]+|[0-9]+|[,.;!?]")
+PAUSE = frozenset(",.;!?")     # a count does not reach across these
+NUMBER = {w: i for i, w in enumerate(
+    "zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen".split())}
+
+
+@functools.lru_cache(maxsize=1)
+def words() -> dict:
+    """The step words of route_words.yaml, tables as dicts and lists as frozensets."""
+    import yaml
+    data = yaml.safe_load(WORDS.read_text(encoding="utf-8"))
+    keys = ("directions", "sideways", "ahead", "turn", "clockwise", "counts", "units", "count_typos")
+    return {k: dict(data[k]) if isinstance(data[k], dict) else
+            (list(data[k]) if k == "clockwise" else frozenset(data[k])) for k in keys}
+
+
+@dataclass(frozen=True)
+class Move:
+    """One step of the command: `way` a compass name, "sideways", "ahead", or "turn-left" /
+    "turn-right" (the facing turns, no move); `count` None when none was said."""
+    way: str
+    count: int | None = None
+
+
+def moves(command: str, compass: dict) -> list[Move]:
+    """The command's moves, in order (empty: it names no direction). A count goes with the
+    direction it follows ("down four"), or, in a command whose first count comes before its
+    first direction, with the one it comes before ("four steps down , two over"); never
+    across a comma. A count of steps with no direction ("turn right, go one step") goes
+    ahead."""
+    w = words()
+    toks = TOKEN.findall(command.lower())
+    names = {n: n for n in compass}
+    names.update({k: v for k, v in w["directions"].items() if v in compass})
+    events = []                # (token index, way or None for a count, count)
+    for i, t in enumerate(toks):
+        if t in names:
+            turning = any(toks[k] in w["turn"] for k in range(max(0, i - 2), i)) or \
+                (i + 1 < len(toks) and toks[i + 1] in w["turn"])
+            if turning and t not in compass and names[t] in ("west", "east"):
+                events.append((i, "turn-" + ("left" if names[t] == "west" else "right"), None))
+            else:
+                events.append((i, names[t], None))
+        elif t in w["sideways"] or t in w["ahead"]:
+            events.append((i, "sideways" if t in w["sideways"] else "ahead", None))
+        else:
+            n = _count(toks, i)
+            if n is not None:
+                events.append((i, None, n))
+    out, used = [], set()
+    ways = [k for k, e in enumerate(events) if e[1] is not None]
+    counts = [k for k, e in enumerate(events) if e[1] is None]
+    counts_first = bool(ways and counts) and counts[0] < ways[0]
+    for pos, k in enumerate(ways):
+        way = events[k][1]
+        count = None
+        if not way.startswith("turn-"):
+            nxt = ways[pos + 1] if pos + 1 < len(ways) else len(events)
+            prev = ways[pos - 1] if pos else -1
+            after = [j for j in range(k + 1, nxt) if j not in used and events[j][0] - events[k][0] <= NEAR
+                     and not PAUSE & set(toks[events[k][0]:events[j][0]])]
+            before = [j for j in range(k - 1, prev, -1) if j not in used and events[k][0] - events[j][0] <= NEAR
+                      and not PAUSE & set(toks[events[j][0]:events[k][0]])]
+            j = ((before or after) if counts_first else (after or before) or [None])[0] if after or before else None
+            if j is not None:
+                used.add(j)
+                count = events[j][2]
+        out.append((events[k][0], Move(way, count)))
+    for j, (i, way, n) in enumerate(events):
+        if way is None and j not in used and i + 1 < len(toks) and toks[i + 1] in w["units"]:
+            out.append((i, Move("ahead", n)))
+    return [m for _, m in sorted(out, key=lambda x: x[0])]
+
+
+def _count(toks: list, i: int) -> int | None:
+    """The count the word at `i` says, or None."""
+    w = words()
+    t = toks[i]
+    if t.isdigit() and len(t) <= 2:
+        return int(t)
+    if t in NUMBER or t in w["counts"]:
+        return NUMBER.get(t, w["counts"].get(t))
+    if t in w["count_typos"] and i + 1 < len(toks) and toks[i + 1] in w["units"] and i > 0 and \
+            not toks[i - 1].isdigit() and toks[i - 1] not in NUMBER:
+        return w["count_typos"][t]
+    return None
+
+
+def gives_steps(said: list[Move]) -> bool:
+    """Whether the moves walk at all (not only turn)."""
+    return any(not m.way.startswith("turn-") for m in said)
+
+
+@dataclass(frozen=True)
+class End:
+    """Where the steps end: the agent's room, whether it ever left its start room, and each
+    thing's room (None: not in a room of the map)."""
+    agent: str | None
+    agent_moved: bool
+    things: tuple          # ((thing, room), ...)
+
+
+def read(command: str, cells, at: tuple | None, beta: float) -> list[tuple[float, End]] | None:
+    """The ends of the steps the command gives from `at` (the agent's position, its facing,
+    {thing: position}; world.Cells.at) on the map `cells` (world.Cells), with their shares
+    (summing to 1), or None when it gives none or there is no map."""
+    if cells is None or at is None:
+        return None
+    said = moves(command, cells.compass)
+    if not gives_steps(said):
+        return None
+    position, facing, pushable = at
+    start_room = cells.room.get(position)
+    things = tuple(sorted(pushable.items()))
+    states: dict = {}
+    for flip_x in (False, True):
+        for flip_z in (False, True):
+            frame = _frame(cells.compass, flip_x, flip_z)
+            if frame is None:
+                continue
+            s = (position, facing, things, False)
+            states[(frame, s)] = states.get((frame, s), 0.0) + math.exp(-beta * (flip_x + flip_z))
+    for move in said:
+        nxt: dict = {}
+        for (frame, s), weight in states.items():
+            for t, share, faults in _step(s, move, frame, cells, start_room):
+                key = (frame, t)
+                nxt[key] = nxt.get(key, 0.0) + weight * share * math.exp(-beta * faults)
+        states = dict(sorted(nxt.items(), key=lambda kv: -kv[1])[:BEAM])
+    ends: dict = {}
+    for (_, (position, _, things_at, left)), weight in states.items():
+        rooms = tuple((t, cells.room.get(p)) for t, p in things_at)
+        end = End(cells.room.get(position), left or cells.room.get(position) != start_room, rooms)
+        ends[end] = ends.get(end, 0.0) + weight
+    total = sum(ends.values())
+    if total <= 0:
+        return None
+    return sorted(((w / total, e) for e, w in ends.items()), key=lambda x: -x[0])
+
+
+def _frame(compass: dict, flip_x: bool, flip_z: bool) -> dict | None:
+    """{compass name: step} with east/west (flip_x) or north/south (flip_z) swapped, or None
+    when the domain lacks the pair."""
+    swap = {}
+    if flip_x:
+        if not {"east", "west"} <= set(compass):
+            return None
+        swap.update(east="west", west="east")
+    if flip_z:
+        if not {"north", "south"} <= set(compass):
+            return None
+        swap.update(north="south", south="north")
+    return tuple(sorted((n, compass[swap.get(n, n)]) for n in compass))
+
+
+def _step(s: tuple, move: Move, frame: tuple, cells, start_room) -> list[tuple[tuple, float, int]]:
+    """The states one move may lead to: [(state, share, faults)]."""
+    position, facing, things, left = s
+    order = [d for d in words()["clockwise"] if d in dict(frame)]
+    if move.way.startswith("turn-"):
+        if facing not in order:
+            return [(s, 1.0, 0)]
+        k = order.index(facing) + (1 if move.way == "turn-right" else -1)
+        return [((position, order[k % len(order)], things, left), 1.0, 0)]
+    if move.way == "sideways":
+        ways = [d for d in ("east", "west") if d in dict(frame)]
+    elif move.way == "ahead":
+        ways = [facing] if facing in dict(frame) else []
+    else:
+        ways = [move.way]
+    out = []
+    for way in ways:
+        for t, faults in _walk(s, way, dict(frame)[way], move.count, cells, start_room):
+            out.append(((t[0], way, t[1], t[2]), 1.0 / len(ways), faults))
+    return out or [(s, 1.0, 1)]
+
+
+def _walk(s: tuple, way: str, step: tuple, count: int | None, cells, start_room) -> list[tuple[tuple, int]]:
+    """[((position, things, left), faults)] after walking `count` steps along `step` (one
+    fewer or one more: a fault each; without a count, as far as it goes). A step into a
+    wall, or into a thing that cannot be pushed on, is a fault and leaves the agent where
+    it was."""
+    position, _, things, left = s
+    path = [(position, things, left, 0)]          # after k steps: (position, things, left, faults)
+    blocked = 0
+    for _ in range(count + 1 if count is not None else len(cells.room)):
+        position, things, ok = _one(position, things, step, cells)
+        if not ok and count is None:
+            break
+        blocked += not ok
+        left = left or (ok and cells.room.get(position) != start_room)
+        path.append((position, things, left, blocked))
+    if count is None:       # as far as it goes; not a step at all is a fault
+        position, things, left, _ = path[-1]
+        return [((position, things, left), int(len(path) == 1))]
+    return [((p, t, lf), faults + abs(k - count)) for k, (p, t, lf, faults) in enumerate(path)
+            if k >= 1 and abs(k - count) <= 1]
+
+
+def _one(position: tuple, things: tuple, step: tuple, cells) -> tuple[tuple, tuple, bool]:
+    """One step: (position, things, whether it moved)."""
+    there = tuple(a + b for a, b in zip(position, step))
+    at = {p: t for t, p in things}
+    if there in at:
+        beyond = tuple(a + b for a, b in zip(there, step))
+        if not _free(beyond, cells) or beyond in at:
+            return position, things, False
+        things = tuple(sorted((t, beyond if t == at[there] else p) for t, p in things))
+        return there, things, True
+    if not _free(there, cells):
+        return position, things, False
+    return there, things, True
+
+
+def _free(position: tuple, cells) -> bool:
+    """Whether a thing or the agent may stand there."""
+    return position in cells.room

@@ -1,0 +1,151 @@
+"""Commands given as steps on the map (grounding/steps.py): "go down four, left five, up two".
+
+`route_line` (tests/data/route_line.yaml) is three rooms in a row, a doorway in each wall:
+
+    x  0123456789012
+       #############
+       #...#...#.C.#      kitchen (x 1-3) | hall (x 5-7) | study (x 9-11)
+       #.S.........#      doorways at (4, 2) and (8, 2); z grows downwards (south)
+       #...#...#...#
+       #############
+
+The agent starts at (2, 2) facing east, the chair stands at (10, 1). `cleanup` is the
+corpus's world (dungeons/cleanup.yaml). Every expected end below is read off these
+pictures by hand.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from bcc.errors import BccError
+from bcc.grounding import route, steps
+from bcc.grounding.learn import space_for
+from bcc.grounding.route_model import RouteModel
+from bcc.grounding.steps import Move
+
+LINE = str(Path(__file__).parent / "data" / "route_line.yaml")
+EXACT = 60.0         # a fault weighs exp(-60): only the reading as said counts
+
+
+def scene(ref: str = LINE):
+    return route.scene_of(space_for(ref))
+
+
+def ends(command: str, ref: str = LINE, beta: float = EXACT) -> dict:
+    """{(agent's room, chair's room, chair moved): share}, shares over 1e-9 rounded."""
+    out: dict = {}
+    for share, o in route.read(command, scene(ref), beta):
+        (_, room, moved), = o.things
+        key = (o.agent, room, moved)
+        out[key] = out.get(key, 0.0) + share
+    return {k: round(v, 6) for k, v in out.items() if v > 1e-9}
+
+
+def test_the_map_is_read_from_the_dungeon():
+    cells = scene().world.map
+    assert cells.start == (2, 2) and cells.facing == "east"
+    assert cells.compass == {"north": (0, -1), "south": (0, 1), "east": (1, 0), "west": (-1, 0)}
+    assert cells.things == {"chair": (10, 1)}
+    assert cells.room[(4, 2)] is None and cells.room[(5, 1)] == "hall" and (4, 1) not in cells.room
+
+
+@pytest.mark.parametrize("command, expected", [
+    ("go down four left five up two", [Move("south", 4), Move("west", 5), Move("north", 2)]),
+    ("three steps down , two over", [Move("south", 3), Move("sideways", 2)]),
+    ("move south three spaces then west twice", [Move("south", 3), Move("west", 2)]),
+    ("go north to spaces", [Move("north", 2)]),
+    ("go down and left", [Move("south"), Move("west")]),
+    ("turn right go one step", [Move("turn-right"), Move("ahead", 1)]),
+    ("go 3 steps east", [Move("east", 3)]),
+])
+def test_moves_are_read_with_their_counts(command, expected):
+    assert steps.moves(command, scene().world.map.compass) == expected
+
+
+@pytest.mark.parametrize("command, expected", [
+    # (2, 2) east 7: 3, 4 (door), 5, 6, 7 (hall), 8 (door), 9: the study
+    ("go right seven", {("study", "study", False): 1.0}),
+    ("go east 3", {("hall", "study", False): 1.0}),
+    # no count: as far as it goes, (11, 2)
+    ("go right", {("study", "study", False): 1.0}),
+    # (2, 2) north one is (2, 1), still the kitchen; then right one is (3, 1)
+    ("go up one , right one", {("kitchen", "study", False): 1.0}),
+    # right 7 to (9, 2), up 1 to (9, 1), right 1 walks into the chair and pushes it to (11, 1)
+    ("right seven , up one , right one", {("study", "study", False): 1.0}),
+    # facing east, a right turn faces south: one step to (2, 3); the kitchen
+    ("turn right and go one step", {("kitchen", "study", False): 1.0}),
+    # ahead is east: 6 steps end in the doorway at (8, 2), in no room
+    ("go forward six", {(None, "study", False): 1.0}),
+])
+def test_steps_end_where_the_map_says(command, expected):
+    assert ends(command) == expected
+
+
+def test_a_pushed_chair_ends_in_another_room():
+    # cleanup: the agent at (6, 2), the chair at (2, 6). Down 5 to (6, 7), left 5 to (1, 7),
+    # up 1 to (1, 6), right 4 pushes the chair from (2, 6) to (6, 6) (the agent at (5, 6)),
+    # down 1, right 1 to (6, 7), up 3 pushes it through the doorway (6, 4) to (6, 3): the blue
+    # room, the agent in the doorway below; down 1, left 4 to (2, 5), up 2 through the green
+    # room's doorway (2, 4) to (2, 3): the green room.
+    got = ends("go down five left five up one right four down one right one up three down one left four up two",
+               "cleanup")
+    assert got == {("green", "blue", True): 1.0}
+
+
+def test_miscounts_and_mirrored_frames_share_by_their_faults():
+    # "right six" from (2, 2): six steps end in the doorway (8, 2); one fewer in the hall
+    # (7, 2), one more in the study (9, 2), a fault each. Mirrored north/south (a fault) the
+    # same. Mirrored east/west (a fault), left walks one step to (1, 2) and then into the
+    # wall: 5 steps take 4 faults (+1 miscount), 6 take 5, 7 take 6 (+1): all the kitchen.
+    b = 2.0
+    f = math.exp(-b)
+    said = 1 + f                                       # as said, and mirrored north/south
+    kitchen = (f + f * f) * (math.exp(-5 * b) + math.exp(-5 * b) + math.exp(-7 * b))
+    total = said * (1 + 2 * f) + kitchen
+    got = ends("go right six", beta=b)
+    assert got[(None, "study", False)] == pytest.approx(said / total, abs=1e-6)
+    assert got[("hall", "study", False)] == pytest.approx(said * f / total, abs=1e-6)
+    assert got[("study", "study", False)] == pytest.approx(said * f / total, abs=1e-6)
+    assert got[("kitchen", "study", False)] == pytest.approx(kitchen / total, abs=1e-6)
+
+
+def test_a_step_list_is_read_as_steps_a_route_as_a_route():
+    # one direction, no count, and a room: the route reader's ("go to the hall")
+    assert ends("go right to the hall") == {("hall", "study", False): 1.0}
+    # one direction and nothing else: steps
+    assert ends("go down") == {("kitchen", "study", False): 1.0}
+
+
+def test_the_route_member_fits_the_weight_of_a_fault():
+    rows = [("go right seven", "agentInRoom(agent, study)"), ("go east 3", "agentInRoom(agent, hall)"),
+            ("go forward two", "agentInRoom(agent, kitchen)"), ("go right five", "agentInRoom(agent, hall)")]
+    tasks = sorted({t for _, t in rows})
+    sc = scene()
+    model = RouteModel.train([(c, tasks, {t: 1.0}) for c, t in rows], [sc] * len(rows))
+    assert model.beta in steps.BETAS
+    again = RouteModel.from_json(model.to_json())
+    assert again.beta == model.beta and again.weights == model.weights
+    scores = model.log_posterior("go right seven", tasks, sc)
+    assert tasks[max(range(len(tasks)), key=scores.__getitem__)] == "agentInRoom(agent, study)"
+    with pytest.raises(BccError):
+        RouteModel.from_json({"format": "bcc-route/1", "weights": {}, "beta": "high"})
+
+
+WORDS = ["go", "up", "down", "left", "right", "north", "south", "east", "west", "over", "forward", "turn",
+         "two", "three", "5", "steps", "twice", ",", "then", "the", "chair", "to", "room"]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.sampled_from(WORDS), max_size=14), st.sampled_from(steps.BETAS))
+def test_any_words_read_to_shares_that_sum_to_one(words, beta):
+    sc = scene()
+    got = route.read(" ".join(words), sc, beta)
+    if got is None:
+        return
+    assert sum(s for s, _ in got) == pytest.approx(1.0)
+    for _, o in got:
+        assert o.agent in set(sc.world.rooms) | {None}
