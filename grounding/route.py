@@ -74,11 +74,13 @@ def scene(world: World | None, space, state: bytes) -> Scene | None:
 @dataclass(frozen=True)
 class Outcome:
     """Where a route ends: the agent's room, whether it ever left its start room; each
-    thing's room, whether it was taken elsewhere; the things the agent ends with."""
+    thing's room, whether it was taken elsewhere; the things the agent ends with; whether
+    the command gave steps (steps.py) rather than rooms and doors."""
     agent: str | None
     agent_moved: bool
     things: tuple                  # ((thing, room at the end, moved), ...)
     carried: frozenset
+    walked: bool = False
 
 
 @dataclass(frozen=True)
@@ -304,7 +306,7 @@ def _walked(command: str, scene_: Scene, beta: float) -> list[tuple[float, Outco
     for share, e in ends:
         pushed = dict(e.things)
         things = tuple((t, pushed.get(t, r), pushed.get(t, r) != r) for t, r in scene_.things)
-        out.append((share, Outcome(e.agent, e.agent_moved, things, frozenset())))
+        out.append((share, Outcome(e.agent, e.agent_moved, things, frozenset(), walked=True)))
     return out
 
 

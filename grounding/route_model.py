@@ -65,6 +65,8 @@ def features(task: str, outcomes: list, scene: Scene) -> dict:
                 f.append("thing:" + ("end" if r == end else "start" if r == start.get(t) else "elsewhere") + ":" + state)
             if len(rooms) > 1:
                 f.append("thing:twice")
+        if o.walked:      # people who give steps speak by other conventions: weights of their own
+            f = ["steps:" + name for name in f]
         for name in f:
             out[name] = out.get(name, 0.0) + share
     return out

@@ -30,7 +30,6 @@ BETAS = (1.0, 2.0, 4.0)    # the weights of one fault route_model.py chooses amo
 BEAM = 64                  # readings followed at once (the heaviest kept)
 NEAR = 3                   # a count stands at most this many words from its direction
 TOKEN = re.compile(r"[a-z]+|[0-9]+|[,.;!?]")
-PAUSE = frozenset(",.;!?")     # a count does not reach across these
 NUMBER = {w: i for i, w in enumerate(
     "zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen".split())}
 
@@ -40,7 +39,7 @@ def words() -> dict:
     """The step words of route_words.yaml, tables as dicts and lists as frozensets."""
     import yaml
     data = yaml.safe_load(WORDS.read_text(encoding="utf-8"))
-    keys = ("directions", "sideways", "ahead", "turn", "clockwise", "counts", "units", "count_typos")
+    keys = ("directions", "sideways", "ahead", "turn", "clockwise", "counts", "units", "count_typos", "then")
     return {k: dict(data[k]) if isinstance(data[k], dict) else
             (list(data[k]) if k == "clockwise" else frozenset(data[k])) for k in keys}
 
@@ -57,7 +56,7 @@ def moves(command: str, compass: dict) -> list[Move]:
     """The command's moves, in order (empty: it names no direction). A count goes with the
     direction it follows ("down four"), or, in a command whose first count comes before its
     first direction, with the one it comes before ("four steps down , two over"); never
-    across a comma. A count of steps with no direction ("turn right, go one step") goes
+    across a word that ends a step ("then", "and", a comma). A count of steps with no direction ("turn right, go one step") goes
     ahead."""
     w = words()
     toks = TOKEN.findall(command.lower())
@@ -89,9 +88,9 @@ def moves(command: str, compass: dict) -> list[Move]:
             nxt = ways[pos + 1] if pos + 1 < len(ways) else len(events)
             prev = ways[pos - 1] if pos else -1
             after = [j for j in range(k + 1, nxt) if j not in used and events[j][0] - events[k][0] <= NEAR
-                     and not PAUSE & set(toks[events[k][0]:events[j][0]])]
+                     and not w["then"] & set(toks[events[k][0]:events[j][0]])]
             before = [j for j in range(k - 1, prev, -1) if j not in used and events[k][0] - events[j][0] <= NEAR
-                      and not PAUSE & set(toks[events[j][0]:events[k][0]])]
+                      and not w["then"] & set(toks[events[j][0]:events[k][0]])]
             j = ((before or after) if counts_first else (after or before) or [None])[0] if after or before else None
             if j is not None:
                 used.add(j)
@@ -151,10 +150,15 @@ def read(command: str, cells, at: tuple | None, beta: float) -> list[tuple[float
                 continue
             s = (position, facing, things, False)
             states[(frame, s)] = states.get((frame, s), 0.0) + math.exp(-beta * (flip_x + flip_z))
-    for move in said:
+    walks = [m for m in said if not m.way.startswith("turn-")]
+    if any(a.count is None and a == b for a, b in zip(walks, walks[1:])):
+        # "down , down , left": a word a step
+        said = [Move(m.way, 1) if m.count is None and not m.way.startswith("turn-") else m for m in said]
+    for k, move in enumerate(said):
+        following = next((m.way for m in said[k + 1:] if not m.way.startswith("turn-")), None)
         nxt: dict = {}
         for (frame, s), weight in states.items():
-            for t, share, faults in _step(s, move, frame, cells, start_room):
+            for t, share, faults in _step(s, move, frame, cells, start_room, following):
                 key = (frame, t)
                 nxt[key] = nxt.get(key, 0.0) + weight * share * math.exp(-beta * faults)
         states = dict(sorted(nxt.items(), key=lambda kv: -kv[1])[:BEAM])
@@ -184,8 +188,10 @@ def _frame(compass: dict, flip_x: bool, flip_z: bool) -> dict | None:
     return tuple(sorted((n, compass[swap.get(n, n)]) for n in compass))
 
 
-def _step(s: tuple, move: Move, frame: tuple, cells, start_room) -> list[tuple[tuple, float, int]]:
-    """The states one move may lead to: [(state, share, faults)]."""
+def _step(s: tuple, move: Move, frame: tuple, cells, start_room, following: str | None) \
+        -> list[tuple[tuple, float, int]]:
+    """The states one move may lead to: [(state, share, faults)]; `following` is the way of
+    the next move that walks."""
     position, facing, things, left = s
     order = [d for d in words()["clockwise"] if d in dict(frame)]
     if move.way.startswith("turn-"):
@@ -199,18 +205,23 @@ def _step(s: tuple, move: Move, frame: tuple, cells, start_room) -> list[tuple[t
         ways = [facing] if facing in dict(frame) else []
     else:
         ways = [move.way]
+    then = [dict(frame)[d] for d in (("east", "west") if following == "sideways" else (following,))
+            if d in dict(frame)]
     out = []
     for way in ways:
-        for t, faults in _walk(s, way, dict(frame)[way], move.count, cells, start_room):
-            out.append(((t[0], way, t[1], t[2]), 1.0 / len(ways), faults))
+        for t, share, faults in _walk(s, dict(frame)[way], move.count, cells, start_room, then):
+            out.append(((t[0], way, t[1], t[2]), share / len(ways), faults))
     return out or [(s, 1.0, 1)]
 
 
-def _walk(s: tuple, way: str, step: tuple, count: int | None, cells, start_room) -> list[tuple[tuple, int]]:
-    """[((position, things, left), faults)] after walking `count` steps along `step` (one
-    fewer or one more: a fault each; without a count, as far as it goes). A step into a
-    wall, or into a thing that cannot be pushed on, is a fault and leaves the agent where
-    it was."""
+def _walk(s: tuple, step: tuple, count: int | None, cells, start_room, then: list) \
+        -> list[tuple[tuple, float, int]]:
+    """[((position, things, left), share, faults)] after walking `count` steps along `step`
+    (one fewer or one more: a fault each). A step into a wall, or into a thing that cannot
+    be pushed on, is a fault and leaves the agent where it was. Without a count the walk
+    stops, each with an equal share, where people stop: on entering a room, where the next
+    move's way (`then`: its steps) opens into a door or another room, before walking into
+    a thing, or as far as it goes; not a step at all is a fault."""
     position, _, things, left = s
     path = [(position, things, left, 0)]          # after k steps: (position, things, left, faults)
     blocked = 0
@@ -221,11 +232,29 @@ def _walk(s: tuple, way: str, step: tuple, count: int | None, cells, start_room)
         blocked += not ok
         left = left or (ok and cells.room.get(position) != start_room)
         path.append((position, things, left, blocked))
-    if count is None:       # as far as it goes; not a step at all is a fault
-        position, things, left, _ = path[-1]
-        return [((position, things, left), int(len(path) == 1))]
-    return [((p, t, lf), faults + abs(k - count)) for k, (p, t, lf, faults) in enumerate(path)
-            if k >= 1 and abs(k - count) <= 1]
+    if count is not None:
+        return [((p, t, lf), 1.0, faults + abs(k - count)) for k, (p, t, lf, faults) in enumerate(path)
+                if k >= 1 and abs(k - count) <= 1]
+    if len(path) == 1:
+        return [((position, things, left), 1.0, 1)]
+    stops = [k for k in range(1, len(path)) if k == len(path) - 1 or _stops(path, k, step, then, cells)]
+    return [((path[k][0], path[k][1], path[k][2]), 1.0 / len(stops), 0) for k in stops]
+
+
+def _stops(path: list, k: int, step: tuple, then: list, cells) -> bool:
+    """Whether a walk without a count may stop after its k-th step (see _walk)."""
+    room = cells.room
+    here, things = path[k][0], path[k][1]
+    if room.get(here) is not None and room.get(here) != room.get(path[k - 1][0]):
+        return True
+    ahead = tuple(a + b for a, b in zip(here, step))
+    if ahead in {p for _, p in things}:
+        return True
+    for turn in then:
+        side = tuple(a + b for a, b in zip(here, turn))
+        if side in room and room.get(side) != room.get(here):
+            return True
+    return False
 
 
 def _one(position: tuple, things: tuple, step: tuple, cells) -> tuple[tuple, tuple, bool]:

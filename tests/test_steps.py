@@ -70,8 +70,11 @@ def test_moves_are_read_with_their_counts(command, expected):
     # (2, 2) east 7: 3, 4 (door), 5, 6, 7 (hall), 8 (door), 9: the study
     ("go right seven", {("study", "study", False): 1.0}),
     ("go east 3", {("hall", "study", False): 1.0}),
-    # no count: as far as it goes, (11, 2)
-    ("go right", {("study", "study", False): 1.0}),
+    # no count: a stop on entering each room, (5, 2) the hall and (9, 2) the study, or as
+    # far as it goes, (11, 2) in the study: a third each
+    ("go right", {("hall", "study", False): round(1 / 3, 6), ("study", "study", False): round(2 / 3, 6)}),
+    # a word a step: (3, 2), the doorway (4, 2), (5, 2) in the hall
+    ("right , right , right", {("hall", "study", False): 1.0}),
     # (2, 2) north one is (2, 1), still the kitchen; then right one is (3, 1)
     ("go up one , right one", {("kitchen", "study", False): 1.0}),
     # right 7 to (9, 2), up 1 to (9, 1), right 1 walks into the chair and pushes it to (11, 1)
@@ -94,6 +97,17 @@ def test_a_pushed_chair_ends_in_another_room():
     got = ends("go down five left five up one right four down one right one up three down one left four up two",
                "cleanup")
     assert got == {("green", "blue", True): 1.0}
+
+
+def test_a_walk_without_counts_stops_where_people_stop():
+    # cleanup, from (6, 2): south stops on entering the red room at (6, 5), or at the wall
+    # (6, 7). From (6, 5) west stops below the green room's doorway at (2, 5), where the next
+    # move (north) opens into it, or at the wall (1, 5); from (6, 7) only at the wall (1, 7).
+    # North from (2, 5) ends in the green room ((2, 3) on entering it, or (2, 1)); from (1, 5)
+    # it cannot take a step (a fault: nothing at this beta); from (1, 7) it ends at (1, 5),
+    # red. Shares: green 1/2 x 1/2 = 1/4, red 1/2, normalised: 1/3 and 2/3.
+    got = ends("go south then west then north", "cleanup")
+    assert got == {("green", "red", False): round(1 / 3, 6), ("red", "red", False): round(2 / 3, 6)}
 
 
 def test_miscounts_and_mirrored_frames_share_by_their_faults():
