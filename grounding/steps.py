@@ -25,13 +25,13 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from .numbers import UNITS as NUMBER
+
 WORDS = Path(__file__).with_name("route_words.yaml")
 BETAS = (1.0, 2.0, 4.0)    # the weights of one fault route_model.py chooses among
 BEAM = 64                  # readings followed at once (the heaviest kept)
 NEAR = 3                   # a count stands at most this many words from its direction
 TOKEN = re.compile(r"[a-z]+|[0-9]+|[,.;!?]")
-NUMBER = {w: i for i, w in enumerate(
-    "zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen".split())}
 
 
 @functools.lru_cache(maxsize=1)
@@ -39,7 +39,8 @@ def words() -> dict:
     """The step words of route_words.yaml, tables as dicts and lists as frozensets."""
     import yaml
     data = yaml.safe_load(WORDS.read_text(encoding="utf-8"))
-    keys = ("directions", "sideways", "ahead", "turn", "clockwise", "counts", "units", "count_typos", "then")
+    keys = ("directions", "sideways", "ahead", "turn", "turns", "clockwise", "counts", "units", "count_typos",
+            "then")
     return {k: dict(data[k]) if isinstance(data[k], dict) else
             (list(data[k]) if k == "clockwise" else frozenset(data[k])) for k in keys}
 
@@ -56,8 +57,8 @@ def moves(command: str, compass: dict) -> list[Move]:
     """The command's moves, in order (empty: it names no direction). A count goes with the
     direction it follows ("down four"), or, in a command whose first count comes before its
     first direction, with the one it comes before ("four steps down , two over"); never
-    across a word that ends a step ("then", "and", a comma). A count of steps with no direction ("turn right, go one step") goes
-    ahead."""
+    across a word that ends a step ("then", "and", a comma). A count of steps with no
+    direction ("turn right, go one step") goes ahead."""
     w = words()
     toks = TOKEN.findall(command.lower())
     names = {n: n for n in compass}
@@ -67,8 +68,8 @@ def moves(command: str, compass: dict) -> list[Move]:
         if t in names:
             turning = any(toks[k] in w["turn"] for k in range(max(0, i - 2), i)) or \
                 (i + 1 < len(toks) and toks[i + 1] in w["turn"])
-            if turning and t not in compass and names[t] in ("west", "east"):
-                events.append((i, "turn-" + ("left" if names[t] == "west" else "right"), None))
+            if turning and t in w["turns"]:
+                events.append((i, w["turns"][t], None))
             else:
                 events.append((i, names[t], None))
         elif t in w["sideways"] or t in w["ahead"]:
@@ -91,10 +92,10 @@ def moves(command: str, compass: dict) -> list[Move]:
                      and not w["then"] & set(toks[events[k][0]:events[j][0]])]
             before = [j for j in range(k - 1, prev, -1) if j not in used and events[k][0] - events[j][0] <= NEAR
                       and not w["then"] & set(toks[events[j][0]:events[k][0]])]
-            j = ((before or after) if counts_first else (after or before) or [None])[0] if after or before else None
-            if j is not None:
-                used.add(j)
-                count = events[j][2]
+            near = (before or after) if counts_first else (after or before)
+            if near:
+                used.add(near[0])
+                count = events[near[0]][2]
         out.append((events[k][0], Move(way, count)))
     for j, (i, way, n) in enumerate(events):
         if way is None and j not in used and i + 1 < len(toks) and toks[i + 1] in w["units"]:
