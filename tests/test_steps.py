@@ -163,3 +163,29 @@ def test_any_words_read_to_shares_that_sum_to_one(words, beta):
     assert sum(s for s, _ in got) == pytest.approx(1.0)
     for _, o in got:
         assert o.agent in set(sc.world.rooms) | {None}
+
+
+def test_cli_trains_on_steps_and_walks_new_ones(tmp_path):
+    # route_hall_west: the map above with the agent in the hall at (5, 2). By hand, the
+    # training commands end: left 2, right 6 at (9, 2), the study; right 2, left 6 at (1, 2),
+    # the kitchen; left 1, right 5 at (9, 2); right 1, left 5 at (1, 2). Every command holds
+    # "go left" and "go right", so the words are about even; the walk decides: right four to
+    # (9, 2) then left seven to (2, 2), the kitchen; left four to (1, 2) then right eight to
+    # (9, 2), the study.
+    import json
+    from click.testing import CliRunner
+    from bcc.cli import main
+    west = str(Path(__file__).parent / "data" / "route_hall_west.yaml")
+    rows = [("go left two go right six", "study"), ("go right two go left six", "kitchen"),
+            ("go left one go right five", "study"), ("go right one go left five", "kitchen")]
+    pairs = tmp_path / "pairs.jsonl"
+    pairs.write_text("".join(json.dumps({"command": c, "task": f"agentInRoom(agent, {t})", "dungeon": west}) + "\n"
+                             for c, t in rows))
+    db = str(tmp_path / "my.sqlite")
+    r = CliRunner().invoke(main, ["train", "--pairs", str(pairs), "--db", db])
+    assert r.exit_code == 0, r.output
+    for command, end in (("go right four go left seven", "kitchen"), ("go left four go right eight", "study")):
+        r = CliRunner().invoke(main, ["command", west, command, "--db", db, "--json"])
+        assert r.exit_code == 0, r.output
+        out = json.loads(r.stdout)
+        assert out["task"] == f"agentInRoom(agent, {end})" and out["solved"], out
