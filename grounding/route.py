@@ -270,7 +270,8 @@ def read(command: str, scene_: Scene | None, beta: float = step_list.BETAS[1]) -
     route = steps(command, world)
     said = step_list.moves(command, world.map.compass) if world.map is not None else []
     walks = [m for m in said if not m.way.startswith("turn-")]
-    if walks and (len(walks) >= 2 or any(m.count is not None for m in walks) or not any(m for _, m in route)):
+    named = [m for m in walks if m.way != "ahead"]      # a direction said, not only a count of steps
+    if walks and (len(named) >= 2 or any(m.count is not None for m in named) or not any(m for _, m in route)):
         return _walked(command, scene_, beta)
     if not any(m for _, m in route):
         return None
