@@ -18,8 +18,9 @@ carrying comes with it ("bring", "push", "take"). The words are in `route_words.
 no room or thing name among them. Where the words leave a choice (which of two doors;
 which room "the pink room" is), the reader follows every choice with an equal share, and
 its answer is a distribution over outcomes; route_model.py learns which tasks such
-outcomes go with. A command with no room, door, thing or "back" in it is no route: the
-reader abstains (None).
+outcomes go with. A command that names directions ("go down four, left five, up two") is
+walked on the map's cells instead (steps.py). A command with no room, door, thing, "back"
+or step in it is no route: the reader abstains (None).
 """
 from __future__ import annotations
 

@@ -17,6 +17,10 @@ candidate tasks, never from a list of room names:
 - A *thing* is an argument of an atom that also takes a room and is not the agent
   (`blockInRoom(chair, red)`: `chair`), in exactly one room at the start: something that
   can be taken from room to room. Its words are its name's parts.
+- For commands given as steps (steps.py), the *cells* (`Cells`): the walkable positions
+  and their rooms, and the step each of the agent's facings takes, found by setting the
+  facing in a reachable state and trying the actions; a thing named by a grid value in one
+  cell is where it can be pushed from.
 """
 from __future__ import annotations
 

@@ -150,7 +150,7 @@ def test_the_route_member_fits_the_weight_of_a_fault():
 
 
 WORDS = ["go", "up", "down", "left", "right", "north", "south", "east", "west", "over", "forward", "turn",
-         "two", "three", "5", "steps", "twice", ",", "then", "the", "chair", "to", "room"]
+         "two", "three", "5", "0", "99", "steps", "twice", ",", "then", "the", "chair", "to", "room"]
 
 
 @settings(max_examples=150, deadline=None)
