@@ -7,6 +7,7 @@
     python bench/corpus.py --quick                          # 3 folds, one shuffle, pooled levels only
     python bench/corpus.py --pooled-only                    # without the per-level models
     python bench/corpus.py --nested                         # votes chosen inside each fold: bench/corpus_nested.json
+    python bench/corpus.py --choose                         # the shipped votes: bench/corpus_votes.json
 
 The corpus is read from where it lies (never copied into the repository). For each mode
 (`--from tasks`, `--from demonstrations`) a fresh model is trained per fold on the other
@@ -25,6 +26,11 @@ fold's votes are chosen by an inner 3-fold cross-validation of its training pair
 the spread and a 95 % Wilson interval per level (grounding/shuffles.py), which
 configuration the inner cross-validations chose, and the CPU seconds of the whole run,
 in bench/corpus_nested.json.
+
+`--choose` makes the same choice once over the whole file (the 3-fold inner
+cross-validation of grounding/nested.py, seed 0) and writes the chosen configuration and
+its votes to bench/corpus_votes.json: the shipped votes (ensemble.MEMBERS) are these, so
+what `bcc train` ships is what the nested figures measure the choice of.
 """
 from __future__ import annotations
 
@@ -165,6 +171,8 @@ def main(argv=None) -> int:
     ap.add_argument("--resume", action="store_true",
                     help="with --nested: keep the shuffles the output file already holds (same pairs, folds and "
                          "configurations) and run only the others")
+    ap.add_argument("--choose", action="store_true",
+                    help="choose the votes by the inner cross-validation over the whole file: bench/corpus_votes.json")
     args = ap.parse_args(argv)
     from bcc.grounding import pairs
     folds = 3 if args.quick else args.folds
@@ -174,6 +182,8 @@ def main(argv=None) -> int:
     levels = sorted({r["level"] for r in rows})
     if args.nested:
         return _report_nested(args, rows, levels, folds, seeds)
+    if args.choose:
+        return _choose(args, rows)
     # the two modes are independent: one process each (the machine's other core)
     with ProcessPoolExecutor(max_workers=min(args.workers, len(pairs.MODES))) as pool:
         jobs = {mode: pool.submit(_mode, rows, levels, mode, folds, seeds,
@@ -207,6 +217,27 @@ def main(argv=None) -> int:
            "python": sys.version.split()[0], "machine": platform.machine()}
     from bcc.atomic import write_text
     write_text(args.output or str(HERE / "corpus.json"), json.dumps(out, indent=2) + "\n")
+    return 0
+
+
+def _choose(args, rows) -> int:
+    """The configuration an inner cross-validation over all `rows` chooses, and its votes."""
+    from bcc.grounding import nested, pairs
+    t0 = time.process_time()
+    examples = pairs.examples(rows, "tasks")
+    inner = pairs.folds(list(range(len(rows))), nested.INNER, 0)
+    name, accuracy, votes = nested.choose(examples, lambda k: rows[k]["task"], inner, pairs.scenes(rows))
+    cpu = time.process_time() - t0
+    print(f"{'configuration':<22}{'inner accuracy %':>18}")
+    for n, a in sorted(accuracy.items(), key=lambda x: -x[1]):
+        print(f"{n:<22}{100 * a:18.2f}" + ("   <- chosen" if n == name else ""))
+    print(f"votes ({', '.join(m for m, _, _ in nested.POOL)}): {', '.join(f'{v:g}' for v in votes)}")
+    out = {"pairs": args.pairs, "count": len(rows), "inner_folds": nested.INNER, "seed": 0,
+           "pool": [m for m, _, _ in nested.POOL], "chosen": name, "votes": [float(v) for v in votes],
+           "inner_accuracy": accuracy, "cpu_seconds": round(cpu, 1),
+           "python": sys.version.split()[0], "machine": platform.machine()}
+    from bcc.atomic import write_text
+    write_text(args.output or str(HERE / "corpus_votes.json"), json.dumps(out, indent=2) + "\n")
     return 0
 
 

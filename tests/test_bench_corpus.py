@@ -95,3 +95,20 @@ def test_a_resumed_nested_run_keeps_finished_shuffles_and_summarises_all(tmp_pat
     for lv, v in report["nested"]["summary"].items():
         assert v["mean"] == pytest.approx(whole[lv]["mean"]) and v["ci95"] == pytest.approx(whole[lv]["ci95"])
         assert v["total"] == whole[lv]["total"]
+
+
+@pytest.mark.slow
+def test_choose_writes_the_configuration_the_inner_folds_chose(tmp_path):
+    from bcc.grounding import nested
+    data = pairs_file(tmp_path / "pairs.jsonl")
+    out = tmp_path / "votes.json"
+    done = subprocess.run([sys.executable, str(ROOT / "bench" / "corpus.py"), "--pairs", str(data), "--choose",
+                           "-o", str(out)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    got = json.loads(out.read_text())
+    assert got["pool"] == [m for m, _, _ in nested.POOL] and len(got["votes"]) == len(nested.POOL)
+    assert got["chosen"] in dict(nested.CONFIGS)
+    assert got["inner_accuracy"][got["chosen"]] == max(got["inner_accuracy"].values())
+    if got["chosen"] != nested.STACKED:
+        assert tuple(got["votes"]) == tuple(float(v) for v in dict(nested.CONFIGS)[got["chosen"]])
+    assert "<- chosen" in done.stdout
