@@ -15,9 +15,10 @@ these, relative to a goal cell p:
   than q's goal value (writing q first would make p unreachable);
 - an *admissible lower bound*: each unsatisfied atom needs an action that writes it,
   an action writes at most `max_writes` cells, and none costs less than `min_write_cost`;
-  when writing never moves the agent, the agent must also first reach a standing place,
-  and it must stand in as many distinct places as there are atoms with pairwise disjoint
-  standing places (`_places_to_visit`).
+  the agent must also walk: to a standing place of each of a set of atoms whose standing
+  places are pairwise disjoint along the axes no writer moves it (`_walk`: a minimum
+  spanning tree over them), or, where not every write is an achiever but writing never
+  moves the agent, to the nearest standing place.
 
 Nothing here knows what the cells or values mean; it reads only IR shapes.
 """
@@ -54,6 +55,9 @@ class GoalCells:
     writers_stay: bool                # no action both writes cells and moves the agent
     need_offsets: set = field(default_factory=set)   # every relative need offset
     complete: bool = False            # every cell write of every action is an achiever
+    kept_axes: tuple = ()             # position axes no writing action moves the agent along
+    walk_step: int = 0                # the most a move that writes nothing changes those axes (L1)
+    walk_cost: int = 1                # the least such a move costs
 
     def standing(self, atom) -> list:
         """The agent positions from which some achiever writes this atom's value."""
@@ -110,9 +114,10 @@ def _moves(effects, axes) -> bool:
     return False
 
 
-def _step(action, lets, axes) -> int | None:
-    """The L1 length of the agent's move, when every moved axis is itself plus a constant."""
-    total = 0
+def _displacement(action, lets, axes) -> tuple | None:
+    """The agent's move as a constant change per axis, when every moved axis is itself plus
+    a constant; else None."""
+    out = [0, 0, 0]
     for e in action.effects:
         if isinstance(e, ir.When) and _moves((e,), axes):
             return None
@@ -121,8 +126,8 @@ def _step(action, lets, axes) -> int | None:
             axis = axes[e.var]
             if lin is None or tuple(lin[:3]) != tuple(int(i == axis) for i in range(3)):
                 return None
-            total += abs(lin[3])
-    return total
+            out[axis] += lin[3]
+    return tuple(out)
 
 
 def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
@@ -144,6 +149,7 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
     axes = {v: i for i, v in enumerate(c.position_vars)} if len(c.position_vars) == 3 else {}
     achievers, max_writes, write_costs, move_costs, steps, stay = {}, 0, [], [], [], True
     complete = True
+    writer_axes, walks = set(), []          # axes some writer moves the agent along; (cost, shift) of other moves
     for index in c.search:
         act = c.actions[index]
         lets = {loc.name: expr for loc, expr in act.lets}
@@ -151,7 +157,12 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
         moves = _moves(act.effects, axes)
         if moves:
             move_costs.append(act.cost)
-            steps.append(_step(act, lets, axes))
+            shift = _displacement(act, lets, axes)
+            steps.append(None if shift is None else sum(map(abs, shift)))
+            if writes:
+                writer_axes |= {0, 1, 2} if shift is None else {i for i in range(3) if shift[i]}
+            else:
+                walks.append((act.cost, shift))
         if not writes:
             continue
         max_writes = max(max_writes, writes)
@@ -183,6 +194,10 @@ def goal_cells(model, allow_empty: bool = False) -> GoalCells | None:
                     min(move_costs, default=1), stay and bool(axes))
     out.need_offsets = {n[0] for lst in achievers.values() for a in lst for c in a.needs for n in c}
     out.complete = complete
+    if axes and walks and all(shift is not None for _, shift in walks):
+        out.kept_axes = tuple(i for i in range(3) if i not in writer_axes)
+        out.walk_step = max(sum(abs(shift[i]) for i in out.kept_axes) for _, shift in walks)
+        out.walk_cost = min(cost for cost, _ in walks)
     model.memo["goal_cells"] = out
     return out
 
@@ -275,33 +290,54 @@ def lower_bound(cells: GoalCells, model, state, read=None) -> int:
     if not todo:
         return 0
     bound = math.ceil(len(todo) / cells.max_writes) * cells.min_write_cost
+    if not all(cells.achievers.get(a[1]) for a in todo):
+        return bound
+    here = model.agent_position(state)
+    if cells.complete and cells.kept_axes and cells.walk_step:
+        return bound + _walk(cells, todo, here) * cells.walk_cost
     if cells.writers_stay and cells.step:
-        here = model.agent_position(state)
         places = [p for a in todo for p in cells.standing(a)]
-        if places and all(cells.achievers.get(a[1]) for a in todo):
+        if places:
             far = min(sum(abs(i - j) for i, j in zip(here, p)) for p in places)
-            moves = math.ceil(far / cells.step)
-            if cells.complete:
-                moves = max(moves, _places_to_visit(cells, todo, here))
-            bound += moves * cells.min_move_cost
+            bound += math.ceil(far / cells.step) * cells.min_move_cost
     return bound
 
 
-def _places_to_visit(cells: GoalCells, todo: list, here: tuple) -> int:
-    """Moves the agent must make, at least, to stand where the atoms of `todo` are written:
-    atoms whose standing places are pairwise disjoint are written from that many distinct
-    places (no writer moves the agent, and every write is an achiever), so the agent
-    occupies them all and changes place at least once per place beyond the first (or per
-    place, when it starts on none of them). The atoms are picked greedily, fewest standing
-    places first; any such set gives a bound, a larger one a better bound."""
-    standing = sorted((sorted(set(cells.standing(a))) for a in todo), key=lambda r: (len(r), r))
-    used, chosen = set(), 0
+def _walk(cells: GoalCells, todo: list, here: tuple) -> int:
+    """Moves that write nothing the agent must make, at least, to stand where the atoms of
+    `todo` are written. Seen along the axes no writer moves the agent (`kept_axes`), atoms
+    whose standing places are pairwise disjoint there (picked greedily, fewest places
+    first: any such set gives a bound) are written from as many distinct places, which only
+    such moves reach, each changing those axes by `walk_step` at most. The agent visits
+    the groups in some order from where it is, and each leg takes at least the groups'
+    nearest distance over `walk_step` moves: the legs span the groups, so they weigh at
+    least a minimum spanning tree over the groups and the start (Prim's, with numpy)."""
+    import numpy as np
+    keep = cells.kept_axes
+    standing = sorted((sorted({tuple(p[i] for i in keep) for p in cells.standing(a)}) for a in todo),
+                      key=lambda r: (len(r), r))
+    used, groups = set(), []
     for places in standing:
-        if not used.isdisjoint(places):
-            continue
-        used.update(places)
-        chosen += 1
-    return chosen - (1 if here in used else 0)
+        if used.isdisjoint(places):
+            used.update(places)
+            groups.append(places)
+    if not groups:
+        return 0
+    points = np.array([p for g in groups for p in g], dtype=np.int64)
+    owner = np.repeat(np.arange(len(groups)), [len(g) for g in groups])
+    nearest = np.abs(points - np.array([here[i] for i in keep])).sum(axis=1)     # distance to the tree
+    joined = np.zeros(len(groups), dtype=bool)
+    total = 0
+    for _ in range(len(groups)):
+        key = np.full(len(groups), np.iinfo(np.int64).max)
+        np.minimum.at(key, owner, nearest)
+        key[joined] = np.iinfo(np.int64).max
+        g = int(key.argmin())
+        total += -(-int(key[g]) // cells.walk_step)
+        joined[g] = True
+        for q in points[owner == g]:
+            np.minimum(nearest, np.abs(points - q).sum(axis=1), out=nearest)
+    return total
 
 
 def support_levels(cells: GoalCells, read, state) -> dict:

@@ -80,3 +80,74 @@ def test_the_bound_never_exceeds_the_optimum_on_random_worlds(tmp_path):
         if bfs.solved:
             assert bound <= bfs.cost, (seed, text, bound, bfs.plan)
     assert finished >= 20 and raised >= 3, (finished, raised)
+
+
+MASON = """dungeon: case
+domain: mason
+description: a small mason world for the lower bound's tests
+height: 4
+legend:
+  ".": [bedrock]
+  "S": [bedrock]
+  "#": [bedrock, stone]
+map: |
+{rows}
+agent:
+  start: S
+stock:
+  - {{name: bricks_stock, kind: bricks, count: {count}, full: 0}}
+goal: {goal}
+"""
+
+
+def _mason(rows: list[str], goal: list[tuple]) -> str:
+    return MASON.format(rows="\n".join("  " + r for r in rows), count=len(goal),
+                        goal=" and ".join(f"block[{x}, {y}, {z}].kind == bricks" for x, y, z in goal))
+
+
+def test_a_climbing_builder_still_walks_between_far_apart_places(tmp_path):
+    # The mason domain: climbing writes the cell the agent stands in and moves it up, so no
+    # bound from places in three dimensions; but no writer moves the agent along x or z, so
+    # seen from above, bricks at x = 2 and x = 7 (z = 1) are written from the cells around
+    # each or its own: {1, 2, 3} x {1} and {2} x {0, 2}, the same about x = 7, which do not
+    # meet. From x = 0 the agent walks 1 to the first set and 3 from it to the second
+    # (x = 3 to x = 6), one cell a move: 4 moves and 2 placements, 6. BFS: east 3, place
+    # west, east 3, place east = 8.
+    path = tmp_path / "apart.yaml"
+    path.write_text(_mason([".........", "S........", "........."], [(2, 1, 1), (7, 1, 1)]))
+    bound, bfs = _bound_and_optimum(path)
+    assert bfs.solved and bfs.cost == 8
+    assert bound == 6
+
+
+@pytest.mark.slow
+def test_the_bound_never_exceeds_the_optimum_in_random_mason_worlds(tmp_path):
+    # 40 random mason worlds (climbing, descending, climbing down and sliding move the agent
+    # up and down), two or three bricks to place, some of them on top of others: wherever
+    # BFS finishes, bound <= its optimal cost; and the walk raises the bound above the
+    # placements on some.
+    finished = raised = 0
+    for seed in range(40):
+        rnd = random.Random(seed)
+        width, depth = rnd.randint(4, 7), rnd.randint(1, 3)
+        cells = [(x, z) for x in range(width) for z in range(depth)]
+        start, *rest = rnd.sample(cells, len(cells))
+        stones = set(rest[:rnd.randint(0, 2)])
+        free = [c for c in rest if c not in stones]
+        goal = []
+        for x, z in free[:rnd.randint(2, 3)]:
+            goal.append((x, 1, z))
+            if rnd.random() < 0.3:
+                goal.append((x, 2, z))
+        rows = ["".join("S" if (x, z) == start else "#" if (x, z) in stones else "." for x in range(width))
+                for z in range(depth)]
+        path = tmp_path / f"mason{seed}.yaml"
+        path.write_text(_mason(rows, goal))
+        bound, bfs = _bound_and_optimum(path)
+        if bfs.status == "budget":
+            continue
+        finished += 1
+        raised += bound > len(goal)
+        if bfs.solved:
+            assert bound <= bfs.cost, (seed, rows, goal, bound, bfs.plan)
+    assert finished >= 20 and raised >= 5, (finished, raised)
