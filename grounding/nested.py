@@ -27,29 +27,32 @@ from .network import Network
 from .route_model import RouteModel
 
 INNER = 3
-# the members a configuration may vote with: (name, model class, training options)
+# the members a configuration may vote with: (name, model class, training options); the
+# route reader's member twice, once voting on routes of rooms and doors, once on steps, so
+# that a stacked vote can weigh the two readings apart
 POOL = (("words", LogLinear, {"skips": 0}),
         ("skips", LogLinear, {"skips": 4}),
         ("whole", LogLinear, {"skips": 0, "factored": False}),
         ("bayes", NaiveBayes, {}),
         ("network", Network, {}),
         ("letters", LogLinear, {"skips": 0, "factored": False, "chars": 4}),
-        ("route", RouteModel, {}))
+        ("route", RouteModel, {"reads": "routes"}),
+        ("steps", RouteModel, {"reads": "steps"}))
 STACKED = "stacked"
 # (name, one vote per POOL member): at most about a dozen, so that luck on the inner folds
 # has few tries; the shipped votes first (ensemble.MEMBERS). STACKED has no fixed votes:
 # they are fitted to the inner held-out scores (stack_votes).
-CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5, 0, 1)),
-           ("no-route", (1, 1, 1, 0.2, 1.5, 0, 0)),
-           ("no-bayes", (1, 1, 1, 0, 1.5, 0, 1)),
-           ("network-3", (1, 1, 1, 0.2, 3, 0, 1)),
-           ("route-0.5", (1, 1, 1, 0.2, 1.5, 0, 0.5)),
-           ("route-2", (1, 1, 1, 0.2, 1.5, 0, 2)),
-           ("whole-2", (1, 1, 2, 0.2, 1.5, 0, 1)),
-           ("factored", (1, 1, 0, 0.2, 1.5, 0, 1)),
-           ("bayes-0.5", (1, 1, 1, 0.5, 1.5, 0, 1)),
-           ("letters", (1, 1, 1, 0.2, 1.5, 1, 1)),
-           ("network-3-no-route", (1, 1, 1, 0.2, 3, 0, 0)),
+CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5, 0, 1, 1)),
+           ("no-route", (1, 1, 1, 0.2, 1.5, 0, 0, 0)),
+           ("no-bayes", (1, 1, 1, 0, 1.5, 0, 1, 1)),
+           ("network-3", (1, 1, 1, 0.2, 3, 0, 1, 1)),
+           ("route-0.5", (1, 1, 1, 0.2, 1.5, 0, 0.5, 0.5)),
+           ("route-2", (1, 1, 1, 0.2, 1.5, 0, 2, 2)),
+           ("whole-2", (1, 1, 2, 0.2, 1.5, 0, 1, 1)),
+           ("factored", (1, 1, 0, 0.2, 1.5, 0, 1, 1)),
+           ("bayes-0.5", (1, 1, 1, 0.5, 1.5, 0, 1, 1)),
+           ("letters", (1, 1, 1, 0.2, 1.5, 1, 1, 1)),
+           ("network-3-no-route", (1, 1, 1, 0.2, 3, 0, 0, 0)),
            (STACKED, None))
 RIDGE = 1e-3       # penalty on the squared stacked votes: keeps them finite when members agree
 

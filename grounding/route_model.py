@@ -26,6 +26,8 @@ from .route import Scene, read
 from .steps import BETAS
 
 FORMAT = "bcc-route/1"
+ROUTES, STEPS, BOTH = "routes", "steps", "both"
+READS = (ROUTES, STEPS, BOTH)     # which commands a member votes on: routes of rooms and doors, steps, or both
 L2 = 0.01                  # penalty per weight on the mean log-likelihood
 ATOM = re.compile(r"(\w+)\(([^)]*)\)")
 
@@ -75,14 +77,15 @@ def features(task: str, outcomes: list, scene: Scene) -> dict:
 class RouteModel(JsonModelFile):
     reads_world = True
 
-    def __init__(self, weights: dict, beta: float = BETAS[1]):
+    def __init__(self, weights: dict, beta: float = BETAS[1], reads: str = BOTH):
         self.weights = dict(weights)
         self.beta = float(beta)       # the weight of one fault of a command given as steps (steps.py)
+        self.reads = reads            # READS: the commands it votes on (routes, steps or both)
         self.iterations = 0
 
     def log_posterior(self, command: str, tasks: list[str], scene: Scene | None = None) -> list[float] | None:
         """log P(task | command) over `tasks`, or None when the command is no route there."""
-        outcomes = read(command, scene, self.beta)
+        outcomes = _read(command, scene, self.beta, self.reads)
         if outcomes is None:
             return None
         s = np.array([sum(self.weights.get(k, 0.0) * v for k, v in features(t, outcomes, scene).items())
@@ -91,17 +94,20 @@ class RouteModel(JsonModelFile):
         return list(s - np.log(np.exp(s).sum()))
 
     @classmethod
-    def train(cls, examples: list, scenes: list | None = None, l2: float = L2) -> RouteModel:
+    def train(cls, examples: list, scenes: list | None = None, l2: float = L2, reads: str = BOTH) -> RouteModel:
         """Fit the weights to `examples` [(command, candidates, {task: weight})] whose command
-        reads as a route in its scene (`scenes[k]`, parallel to the examples), and the weight
-        of a fault in commands given as steps: the one of `BETAS` whose fit is the most
-        likely (a parameter like the others, fitted to the training pairs alone)."""
-        fits = [_fit(examples, scenes, l2, beta) for beta in BETAS]
+        reads as a route in its scene (`scenes[k]`, parallel to the examples; `reads`: only
+        routes of rooms and doors, only steps, or both), and the weight of a fault in
+        commands given as steps: the one of `BETAS` whose fit is the most likely (a
+        parameter like the others, fitted to the training pairs alone)."""
+        if reads not in READS:
+            raise BccError(f"a route member reads one of {', '.join(READS)}, not {reads!r}")
+        fits = [_fit(examples, scenes, l2, beta, reads) for beta in (BETAS if reads != ROUTES else BETAS[1:2])]
         loss, model = min(fits, key=lambda f: f[0])
         return model
 
     def to_json(self) -> dict:
-        return {"format": FORMAT, "weights": self.weights, "beta": self.beta}
+        return {"format": FORMAT, "weights": self.weights, "beta": self.beta, "reads": self.reads}
 
     @classmethod
     def from_json(cls, data, path: str | None = None) -> RouteModel:
@@ -113,23 +119,34 @@ class RouteModel(JsonModelFile):
         beta = data.get("beta", BETAS[1])
         if isinstance(beta, bool) or not isinstance(beta, (int, float)) or not 0 < beta < 1e6:
             raise BccError("malformed grounding model: \"beta\" must be a positive number", path)
-        return cls(weights, beta)
+        reads = data.get("reads", BOTH)
+        if reads not in READS:
+            raise BccError(f"malformed grounding model: \"reads\" must be one of {', '.join(READS)}", path)
+        return cls(weights, beta, reads)
 
 
-def _fit(examples: list, scenes: list | None, l2: float, beta: float) -> tuple[float, RouteModel]:
+def _read(command: str, scene, beta: float, reads: str):
+    """The reader's outcomes, or None when the command is not of the kind `reads` names."""
+    outcomes = read(command, scene, beta)
+    if outcomes is None or reads == BOTH or (reads == STEPS) == outcomes[0][1].walked:
+        return outcomes
+    return None
+
+
+def _fit(examples: list, scenes: list | None, l2: float, beta: float, reads: str = BOTH) -> tuple[float, RouteModel]:
     """(the penalised mean negative log-likelihood, the model) of the weights fitted with
     steps read at `beta`."""
     rows = []
     for k, (command, candidates, target) in enumerate(examples):
         scene = scenes[k] if scenes else None
-        outcomes = read(command, scene, beta)
+        outcomes = _read(command, scene, beta, reads)
         if outcomes is None:
             continue
         rows.append(([features(t, outcomes, scene) for t in candidates],
                      np.array([float(target.get(t, 0.0)) for t in candidates])))
     index = {f: i for i, f in enumerate(sorted({f for fs, _ in rows for d in fs for f in d}))}
     if not rows or not index:
-        return 0.0, RouteModel({}, beta)
+        return 0.0, RouteModel({}, beta, reads)
     blocks = []
     for fs, y in rows:
         X = np.zeros((len(fs), len(index)))
@@ -150,6 +167,6 @@ def _fit(examples: list, scenes: list | None, l2: float, beta: float) -> tuple[f
             grad -= X.T @ (y - p * y.sum())
         return loss / n + l2 * float(w @ w), grad / n + 2 * l2 * w
     fit = minimize(value_and_gradient, np.zeros(len(index)), jac=True, method="L-BFGS-B")
-    model = RouteModel({f: round(float(fit.x[i]), 6) for f, i in index.items() if abs(fit.x[i]) > 1e-9}, beta)
+    model = RouteModel({f: round(float(fit.x[i]), 6) for f, i in index.items() if abs(fit.x[i]) > 1e-9}, beta, reads)
     model.iterations = int(fit.nit)
     return float(fit.fun), model

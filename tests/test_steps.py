@@ -149,6 +149,26 @@ def test_the_route_member_fits_the_weight_of_a_fault():
         RouteModel.from_json({"format": "bcc-route/1", "weights": {}, "beta": "high"})
 
 
+def test_a_route_member_may_vote_on_steps_or_on_routes_only():
+    rows = [("go right seven", "agentInRoom(agent, study)"), ("go to the hall", "agentInRoom(agent, hall)")]
+    tasks = sorted({t for _, t in rows})
+    sc = scene()
+    examples = [(c, tasks, {t: 1.0}) for c, t in rows]
+    steps_only = RouteModel.train(examples, [sc] * 2, reads="steps")
+    routes_only = RouteModel.train(examples, [sc] * 2, reads="routes")
+    assert steps_only.log_posterior("go right seven", tasks, sc) is not None
+    assert steps_only.log_posterior("go to the hall", tasks, sc) is None
+    assert routes_only.log_posterior("go to the hall", tasks, sc) is not None
+    assert routes_only.log_posterior("go right seven", tasks, sc) is None
+    assert all(f.startswith("steps:") for f in steps_only.weights)
+    assert not any(f.startswith("steps:") for f in routes_only.weights)
+    assert RouteModel.from_json(steps_only.to_json()).reads == "steps"
+    with pytest.raises(BccError):
+        RouteModel.train(examples, [sc] * 2, reads="doors")
+    with pytest.raises(BccError):
+        RouteModel.from_json({"format": "bcc-route/1", "weights": {}, "reads": "doors"})
+
+
 WORDS = ["go", "up", "down", "left", "right", "north", "south", "east", "west", "over", "forward", "turn",
          "two", "three", "5", "0", "99", "steps", "twice", ",", "then", "the", "chair", "to", "room"]
 
