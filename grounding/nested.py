@@ -40,7 +40,9 @@ POOL = (("words", LogLinear, {"skips": 0}),
         ("steps", RouteModel, {"reads": "steps"}))
 STACKED = "stacked"
 # (name, one vote per POOL member): at most about a dozen, so that luck on the inner folds
-# has few tries; the shipped votes first (ensemble.MEMBERS). STACKED has no fixed votes:
+# has few tries; first the votes shipped until the step reader ("shipped", naive Bayes
+# 0.2); ensemble.MEMBERS ships the one an inner cross-validation over the whole corpus
+# chose ("no-bayes": bench/corpus.py --choose). STACKED has no fixed votes:
 # they are fitted to the inner held-out scores (stack_votes).
 CONFIGS = (("shipped", (1, 1, 1, 0.2, 1.5, 0, 1, 1)),
            ("no-route", (1, 1, 1, 0.2, 1.5, 0, 0, 0)),
