@@ -263,16 +263,16 @@ def _modifier(toks: list, i: int, lex: dict, door: bool) -> str:
 def read(command: str, scene_: Scene | None, beta: float = step_list.BETAS[1]) -> list[tuple[float, Outcome]] | None:
     """The outcomes of the route the command describes, with their shares (summing to 1),
     or None when the command names no room, door, thing, way back or step. A command that
-    gives two steps or more, or a count ("go down four, left five"), or a step and no room,
-    is walked on the map (steps.py; `beta` weighs its faults)."""
+    names two directions or more, or one with a count ("go down four, left five"), or a
+    step and no room, is walked on the map (steps.py; `beta` weighs its faults)."""
     if scene_ is None:
         return None
     world = scene_.world
     route = steps(command, world)
     said = step_list.moves(command, world.map.compass) if world.map is not None else []
     walks = [m for m in said if not m.way.startswith("turn-")]
-    named = [m for m in walks if m.way != "ahead"]      # a direction said, not only a count of steps
-    if walks and (len(named) >= 2 or any(m.count is not None for m in named) or not any(m for _, m in route)):
+    directed = [m for m in walks if m.way != "ahead"]      # a direction said, not only a count of steps
+    if walks and (len(directed) >= 2 or any(m.count is not None for m in directed) or not any(m for _, m in route)):
         return _walked(command, scene_, beta)
     if not any(m for _, m in route):
         return None
