@@ -20,6 +20,7 @@ compass names are the domain's names of the agent's facing.
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 import re
 from dataclasses import dataclass
@@ -39,10 +40,10 @@ def words() -> dict:
     """The step words of route_words.yaml, tables as dicts and lists as frozensets."""
     import yaml
     data = yaml.safe_load(WORDS.read_text(encoding="utf-8"))
-    keys = ("directions", "sideways", "ahead", "turn", "turns", "clockwise", "counts", "units", "count_typos",
-            "then")
+    keys = ("directions", "sideways", "ahead", "turn", "turns", "clockwise", "mirrors", "counts", "units",
+            "count_typos", "then")
     return {k: dict(data[k]) if isinstance(data[k], dict) else
-            (list(data[k]) if k == "clockwise" else frozenset(data[k])) for k in keys}
+            (list(data[k]) if k in ("clockwise", "mirrors") else frozenset(data[k])) for k in keys}
 
 
 @dataclass(frozen=True)
@@ -144,13 +145,11 @@ def read(command: str, cells, at: tuple | None, beta: float) -> list[tuple[float
     start_room = cells.room.get(position)
     things = tuple(sorted(pushable.items()))
     states: dict = {}
-    for flip_x in (False, True):
-        for flip_z in (False, True):
-            frame = _frame(cells.compass, flip_x, flip_z)
-            if frame is None:
-                continue
-            s = (position, facing, things, False)
-            states[(frame, s)] = states.get((frame, s), 0.0) + math.exp(-beta * (flip_x + flip_z))
+    pairs = [p for p in words()["mirrors"] if set(p) <= set(cells.compass)]
+    for flips in itertools.product((False, True), repeat=len(pairs)):
+        frame = _frame(cells.compass, [p for p, flip in zip(pairs, flips) if flip])
+        s = (position, facing, things, False)
+        states[(frame, s)] = states.get((frame, s), 0.0) + math.exp(-beta * sum(flips))
     walks = [m for m in said if not m.way.startswith("turn-")]
     if any(a.count is None and a == b for a, b in zip(walks, walks[1:])):
         # "down , down , left": a word a step
@@ -174,18 +173,9 @@ def read(command: str, cells, at: tuple | None, beta: float) -> list[tuple[float
     return sorted(((w / total, e) for e, w in ends.items()), key=lambda x: -x[0])
 
 
-def _frame(compass: dict, flip_x: bool, flip_z: bool) -> dict | None:
-    """{compass name: step} with east/west (flip_x) or north/south (flip_z) swapped, or None
-    when the domain lacks the pair."""
-    swap = {}
-    if flip_x:
-        if not {"east", "west"} <= set(compass):
-            return None
-        swap.update(east="west", west="east")
-    if flip_z:
-        if not {"north", "south"} <= set(compass):
-            return None
-        swap.update(north="south", south="north")
+def _frame(compass: dict, swapped: list) -> tuple:
+    """((compass name, step), ...) with each pair of names in `swapped` trading steps."""
+    swap = {a: b for p in swapped for a, b in (p, p[::-1])}
     return tuple(sorted((n, compass[swap.get(n, n)]) for n in compass))
 
 
@@ -200,14 +190,14 @@ def _step(s: tuple, move: Move, frame: tuple, cells, start_room, following: str 
             return [(s, 1.0, 0)]
         k = order.index(facing) + (1 if move.way == "turn-right" else -1)
         return [((position, order[k % len(order)], things, left), 1.0, 0)]
+    across = words()["mirrors"][0]
     if move.way == "sideways":
-        ways = [d for d in ("east", "west") if d in dict(frame)]
+        ways = [d for d in across if d in dict(frame)]
     elif move.way == "ahead":
         ways = [facing] if facing in dict(frame) else []
     else:
         ways = [move.way]
-    then = [dict(frame)[d] for d in (("east", "west") if following == "sideways" else (following,))
-            if d in dict(frame)]
+    then = [dict(frame)[d] for d in (across if following == "sideways" else (following,)) if d in dict(frame)]
     out = []
     for way in ways:
         for t, share, faults in _walk(s, dict(frame)[way], move.count, cells, start_room, then):
