@@ -273,7 +273,7 @@ def read(command: str, scene_: Scene | None, beta: float = step_list.BETAS[1]) -
     walks = [m for m in said if not m.way.startswith("turn-")]
     directed = [m for m in walks if m.way != "ahead"]      # a direction said, not only a count of steps
     if walks and (len(directed) >= 2 or any(m.count is not None for m in directed) or not any(m for _, m in route)):
-        return _walked(command, scene_, beta)
+        return _walked(said, scene_, beta)
     if not any(m for _, m in route):
         return None
     named = {m.value for _, ms in route for m in ms if m.kind == "room" and m.how == "named"}
@@ -298,10 +298,9 @@ def read(command: str, scene_: Scene | None, beta: float = step_list.BETAS[1]) -
     return sorted(((w / total, o) for o, w in ends.items()), key=lambda x: -x[0])
 
 
-def _walked(command: str, scene_: Scene, beta: float) -> list[tuple[float, Outcome]] | None:
-    """The outcomes of the command read as steps on the map (steps.py)."""
-    start = dict(scene_.things)
-    ends = step_list.read(command, scene_.world.map, scene_.cells, beta)
+def _walked(said: list, scene_: Scene, beta: float) -> list[tuple[float, Outcome]] | None:
+    """The outcomes of a command's moves (steps.moves) walked on the map (steps.py)."""
+    ends = step_list.read(said, scene_.world.map, scene_.cells, beta)
     if ends is None:
         return None
     out = []

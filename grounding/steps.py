@@ -132,14 +132,11 @@ class End:
     things: tuple          # ((thing, room), ...)
 
 
-def read(command: str, cells, at: tuple | None, beta: float) -> list[tuple[float, End]] | None:
-    """The ends of the steps the command gives from `at` (the agent's position, its facing,
-    {thing: position}; world.Cells.at) on the map `cells` (world.Cells), with their shares
-    (summing to 1), or None when it gives none or there is no map."""
-    if cells is None or at is None:
-        return None
-    said = moves(command, cells.compass)
-    if not gives_steps(said):
+def read(said: list[Move], cells, at: tuple | None, beta: float) -> list[tuple[float, End]] | None:
+    """The ends of the moves a command gives (`moves`) from `at` (the agent's position, its
+    facing, {thing: position}; world.Cells.at) on the map `cells` (world.Cells), with their
+    shares (summing to 1), or None when they walk nowhere or there is no map."""
+    if cells is None or at is None or not gives_steps(said):
         return None
     position, facing, pushable = at
     start_room = cells.room.get(position)
