@@ -22,10 +22,20 @@ class Supplies:
     uses: dict          # goal value -> ((StateVar, amount), ...) every achiever of it takes
     suppliers: dict     # StateVar -> [action index] that may raise it
     slots: dict         # StateVar -> (state index, lo)
+    refills: dict = None   # StateVar -> ((StateVar taken, amount given per one taken), ...)
 
     def value(self, state: bytes, var) -> int:
         index, lo = self.slots[var]
         return state[index] + lo
+
+    def held(self, state: bytes, var) -> int:
+        """What of `var` the state holds, counting what the suppliers that turn another
+        held variable into it would give (a closed stack of blocks is blocks held)."""
+        out = self.value(state, var)
+        for other, amount in (self.refills or {}).get(var, ()):
+            if other in self.slots:
+                out += self.value(state, other) * amount
+        return out
 
     def demand(self, values, wanted=None) -> dict:
         """{var: amount} that writing atoms of these values (one per atom) takes, plus the
@@ -54,6 +64,18 @@ def _taken(value, var) -> int | None:
         k = value.right.value
         return k if isinstance(k, int) and not isinstance(k, bool) and k > 0 else None
     return None
+
+
+def _given(value, var) -> int:
+    """What an effect that raises `var` gives at least: k for `var + k` or a constant k
+    (k > 0), else 0."""
+    if isinstance(value, ir.Const) and isinstance(value.value, int) and not isinstance(value.value, bool):
+        return max(value.value, 0)
+    if isinstance(value, ir.Arith) and value.op == "+" and isinstance(value.left, ir.Var) \
+            and value.left.var == var and isinstance(value.right, ir.Const):
+        k = value.right.value
+        return k if isinstance(k, int) and not isinstance(k, bool) and k > 0 else 0
+    return 0
 
 
 def _sets(effects):
@@ -100,12 +122,18 @@ def supplies(model, cells) -> Supplies | None:
     if memo is not None:
         return memo
     position = set(c.position_vars)
-    suppliers, slots = {}, {}
+    suppliers, slots, refills = {}, {}, {}
     for index in c.search:
-        for s, _ in _sets(c.actions[index].effects):
+        effects = list(_sets(c.actions[index].effects))
+        for s, always in effects:
             if s.var in position or _taken(s.value, s.var) is not None:
                 continue
             suppliers.setdefault(s.var, []).append(index)
+            given = _given(s.value, s.var)
+            for t, also in effects:
+                k = _taken(t.value, t.var)
+                if always and also and k is not None and given and t.var not in position:
+                    refills.setdefault(s.var, set()).add((t.var, given // k))
     uses = {}
     for value, achievers in cells.achievers.items():
         common = None
@@ -120,6 +148,12 @@ def supplies(model, cells) -> Supplies | None:
             uses = {v: tuple(t for t in lst if t[0] != var) for v, lst in uses.items()}
         else:
             slots[var] = (slot.index, slot.lo)
-    out = Supplies(uses, {v: sorted(set(a)) for v, a in suppliers.items()}, slots)
+    for var in list(refills):   # the variables taken need slots too
+        for other, _ in refills[var]:
+            slot = c.layout.by_var.get(other)
+            if slot is not None:
+                slots.setdefault(other, (slot.index, slot.lo))
+    out = Supplies(uses, {v: sorted(set(a)) for v, a in suppliers.items()}, slots,
+                   {v: tuple(sorted(r, key=lambda t: t[0].label)) for v, r in refills.items()})
     model.memo["supplies"] = out
     return out

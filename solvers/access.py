@@ -32,6 +32,7 @@ class Access:
         self.places = {}        # atom position -> [standing place]
         self.body = {}          # standing place -> [its body cells]
         self.blocks = {}        # cell -> [atom positions with a place whose body holds it]
+        self.in_body = {}       # cell -> [(atom position, its standing place whose body holds the cell)]
         goal = {pos for pos, v in cells.atoms if v != default}
         for pos, v in cells.atoms:
             achievers = [a for a in cells.achievers.get(v, ()) if not a.moves]
@@ -43,6 +44,7 @@ class Access:
                 for cell in body:
                     if cell in goal and cell != pos:
                         self.blocks.setdefault(cell, []).append(pos)
+                        self.in_body.setdefault(cell, []).append((pos, st))
 
     def _live(self, q, filled, extra=None) -> bool:
         """Some standing place of q has no filled body cell (nor `extra`)."""
@@ -61,6 +63,12 @@ class Access:
             if q != p and q in todo and self._live(q, filled) and not self._live(q, filled, p):
                 return True
         return False
+
+    def in_the_way(self, p, todo, first, footed) -> bool:
+        """Writing the atom at p fills the body of a standing place that a pending atom q
+        for which `first(q)` holds may still be written from (`footed(place)`: the place
+        has, or will have, something to stand on): a write ahead of the order must not."""
+        return any(q in todo and first(q) and footed(st) for q, st in self.in_body.get(p, ()))
 
 
 def exit_orders(access: Access, todo: dict, holding: set, waits: dict) -> dict:

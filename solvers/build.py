@@ -59,7 +59,7 @@ class _Builder:
             for a in lst:
                 self.writes.setdefault(a.action, set()).add(a.write)
         c = model.data("compiled")
-        from ..heuristics.goal_cells import _count_writes, _moves
+        from ..heuristics.goal_cells import _count_writes, _displacement, _moves
         axes = {v: i for i, v in enumerate(c.position_vars)}
         for i in c.search:
             if _count_writes(c.actions[i].effects) and i not in self.writes:
@@ -75,11 +75,18 @@ class _Builder:
         # walks may also clear a cell on the way (take a scaffold down), never fill one
         clear = model.grid.default
         self.walkers = self.movers + sorted({a.action for a in cells.achievers.get(clear, ()) if a.moves})
+        shifts = {i: _displacement(c.actions[i], {loc.name: e for loc, e in c.actions[i].lets}, axes)
+                  for i in self.walkers}
+        back = {sh for sh in shifts.values() if sh is not None}
+        # walks that can be walked back: a walk to the next atom that takes the agent down
+        # a drop it cannot climb again (into a room the structure closes) is tried last
+        self.returnable = [i for i in self.walkers if shifts[i] is not None and tuple(-d for d in shifts[i]) in back]
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
         self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
         self.ahead = ahead    # plan supports and exit orders at the start (a try may go without: build_finish.py)
         if self.rng:
             self.rng.shuffle(self.walkers)
+            self.rng.shuffle(self.returnable)
         # actions that clear a cell without moving: a gathering walk may use them when blocked in
         self.clearers = sorted({a.action for a in cells.achievers.get(clear, ()) if not a.moves})
         self.clear_set = set(self.clearers)
@@ -99,13 +106,18 @@ class _Builder:
         spare = [r for v, r in self.rests_on.items() if v is not None and v != model.grid.default and cells.achievers[v]]
         self.rests_on_any = set.intersection(*spare) if spare else set()   # what any written block rests on
         self.goal = {pos for pos, _ in cells.atoms}   # the goal's cells (planned supports join `cells` later)
+        self.goal_values = dict(cells.atoms)
+        # how many support levels above the lowest pending one a write ahead may go: the
+        # spread of the cells one standing place writes (three heights: two levels)
+        offsets = [a.write for lst in cells.achievers.values() for a in lst if not a.moves]
+        self.reach_span = max((max(o[i] for o in offsets) - min(o[i] for o in offsets) for i in range(3)), default=0)
         self.by_place = {}             # standing place -> [(atom position, achiever action)]
         for pos, v in cells.atoms:
             for a in cells.achievers.get(v, ()):
                 place = (pos[0] - a.write[0], pos[1] - a.write[1], pos[2] - a.write[2])
                 self.by_place.setdefault(place, []).append((pos, a.action))
 
-    def walk(self, state, finish, limit, keep=None):
+    def walk(self, state, finish, limit, keep=None, walkers=None):
         """Breadth-first over the actions that write no cell, to the nearest state where
         `finish(s)` gives the last steps [(action, state)] (reversed; e.g. an achiever that
         writes an eligible atom): the whole path [(action, state)], or None."""
@@ -131,7 +143,7 @@ class _Builder:
                     which = self.meter.check(self.expanded, self.generated, len(parents))
                     if which:
                         raise _Spent(which)
-                for a in self.walkers:
+                for a in walkers or self.walkers:
                     try:
                         n = apply[a](s)
                     except ModelError:
@@ -213,8 +225,8 @@ class _Builder:
 
     def _spends(self, s, n, floor) -> bool:
         """The step s -> n takes a variable below what `floor` keeps for the pending atoms."""
-        value = self.supplies.value
-        return any(value(n, var) < value(s, var) and value(n, var) < keep for var, keep in floor.items())
+        value, held = self.supplies.value, self.supplies.held
+        return any(value(n, var) < value(s, var) and held(n, var) < keep for var, keep in floor.items())
 
     def search(self, state, done, places, floor=None):
         """Greedy from `state` to one where `done(s)`, h = 1 + the distance to the nearest
@@ -504,6 +516,34 @@ class _Builder:
         if self.access is not None:
             self.access = Access(self.cells, self.footing[1], self.model.grid.default)
 
+    def _ahead_here(self, state, todo, level, late, set_aside, blockers, lowest):
+        """An atom of a later support level written from where the agent stands, when
+        it is ready and its cell is in no standing place that an atom of a lower level
+        still needs (with footing there, or a goal atom to stand on): the walls go up
+        several levels a pass (a cell behind the agent, at its feet or head), not one. The
+        step [(action, state)], or None."""
+        if self.access is None:
+            return None
+        read, cells, default = self.read, self.cells, self.model.grid.default
+        goal = self.goal_values
+
+        def footed(place):
+            for dx, dy, dz in self.footing[0]:
+                c = (place[0] + dx, place[1] + dy, place[2] + dz)
+                if read(state, *c) == default and goal.get(c, default) == default:
+                    return False
+            return True
+
+        def ok(p):
+            if p in set_aside or blockers.get(p, 0) > 0 or not ready(cells, read, state, (p, todo[p])):
+                return False
+            mine = level.get(p, late)
+            if mine > lowest + self.reach_span:
+                return False
+            return not self._walls_in(p) and \
+                not self.access.in_the_way(p, todo, lambda q: level.get(q, late) < mine, footed)
+        return self._finish(state, todo, ok, 0)
+
     def _run(self, start, reached):
         self._plan_supports(start)
         cells, read = self.cells, self.read
@@ -538,7 +578,12 @@ class _Builder:
                 self.exhausted.update((v, len(plan)) for v in short)
                 if not todo:
                     return plan, state, None
-            path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit)
+            path = self._ahead_here(state, todo, level, late, set_aside, blockers, lowest)
+            if path is None and len(self.returnable) < len(self.walkers):
+                path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit,
+                                 walkers=self.returnable)
+            if path is None:
+                path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit)
             why = "ok" if path is not None else None
             if path is None:
                 candidates = self._nearest(state, todo, eligible)
