@@ -227,3 +227,57 @@ def test_solve_builds_the_hut_from_the_command_line(tmp_path):
     assert out.returncode == 0, out.stderr
     result = json.loads(out.stdout)
     assert result["solver"] == "build" and result["solved"] and result["lower_bound"] <= result["cost"]
+
+
+def _wall_model(tmp_path, height=6):
+    from bcc.generate_structures import generate_structure
+    path = tmp_path / "wall.yaml"
+    path.write_text(generate_structure("wall", 8, 1, height))
+    return path, compile_dungeon(str(path))
+
+
+def test_a_tall_wall_goes_up_several_layers_a_pass(tmp_path):
+    # 8 x 1 x 6 = 48 blocks. Laid one layer a pass, each block but a layer's first costs
+    # a placement and a step along the wall (at least 2 x 48 - 6 x 2 = 84 actions). Written
+    # ahead, a column takes three blocks (below the feet ahead, under the agent by a climb,
+    # behind at the feet) for one step: 48 + 48 / 3 = 64, plus the turns at the ends.
+    path, model = _wall_model(tmp_path)
+    result = get_solver("build")(model, Budget(time_limit=60))
+    assert result.solved and replays(model, result.plan)
+    assert len(result.plan) <= 1.5 * 48
+    assert result.lower_bound <= len(result.plan)
+
+
+def test_a_write_ahead_never_takes_a_place_a_lower_atom_needs(tmp_path):
+    # the wall starts at (2, 1, 2) along x; the agent standing at (3, 2, 2), on layer 1,
+    # writes (4, 1, 2) below its feet in front: so layer 2's (3, 2, 2) is in the way of
+    # that atom while it is pending, and of nothing once it holds
+    _, model = _wall_model(tmp_path, height=2)
+    b = builder_of(model)
+    todo = dict(b.cells.atoms)
+    lower = lambda q: q[1] == 1   # noqa: E731
+    assert b.access.in_the_way((3, 2, 2), todo, lower, lambda place: True)
+    del todo[(4, 1, 2)], todo[(2, 1, 2)]
+    assert not b.access.in_the_way((3, 2, 2), todo, lower, lambda place: True)
+    assert not b.access.in_the_way((3, 2, 2), dict(b.cells.atoms), lower, lambda place: False)
+    assert b.reach_span == 2   # the mason writes at three heights from one place
+
+
+def test_walks_to_the_next_atom_first_take_steps_that_can_be_walked_back(tmp_path):
+    _, model = _wall_model(tmp_path, height=2)
+    b = builder_of(model)
+    names = {model.data("compiled").actions[i].name for i in b.walkers if i not in b.returnable}
+    # sliding down the side of a block or breaking the one stood on has no step that
+    # undoes it; a drop one cell down and over is undone by a jump
+    assert names == {"slide_north", "slide_south", "slide_east", "slide_west", "descend"}
+
+
+def test_a_closed_stack_is_held(tmp_path):
+    from bcc.heuristics.supplies import supplies
+    _, model = _wall_model(tmp_path)
+    sup = supplies(model, goal_cells(model))
+    (count, refills), = sup.refills.items()
+    (full, per), = refills
+    assert (count.attr, full.attr, per) == ("count", "full", 64)   # open_stack: count = 64, full -= 1
+    s = model.initial
+    assert sup.held(s, count) == sup.value(s, count) + 64 * sup.value(s, full)
