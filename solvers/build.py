@@ -117,7 +117,7 @@ class _Builder:
                 place = (pos[0] - a.write[0], pos[1] - a.write[1], pos[2] - a.write[2])
                 self.by_place.setdefault(place, []).append((pos, a.action))
 
-    def walk(self, state, finish, limit, keep=None, walkers=None):
+    def walk(self, state, finish, limit, keep=None, walkers=None, score=None):
         """Breadth-first over the actions that write no cell, to the nearest state where
         `finish(s)` gives the last steps [(action, state)] (reversed; e.g. an achiever that
         writes an eligible atom): the whole path [(action, state)], or None."""
@@ -127,17 +127,22 @@ class _Builder:
         seen = {where(state)}                   # a place and the cells: what else a walk changes
         frontier = [state]                      # (things picked up) does not make a new place
         while frontier and len(parents) <= limit:
-            nxt = []
+            nxt, found = [], []
             for s in frontier:
                 tail = finish(s)
                 if tail is not None:
-                    path = tail
-                    while parents[s] is not None:
-                        prev, a = parents[s]
-                        path.append((a, s))
-                        s = prev
-                    path.reverse()
-                    return path
+                    found.append((s, tail))
+                    if score is None:
+                        break
+            if found:
+                s, path = max(found, key=lambda f: score(f[1][0][1])) if score else found[0]
+                while parents[s] is not None:
+                    prev, a = parents[s]
+                    path.append((a, s))
+                    s = prev
+                path.reverse()
+                return path
+            for s in frontier:
                 self.expanded += 1
                 if not self.expanded & self.meter.mask:
                     which = self.meter.check(self.expanded, self.generated, len(parents))
@@ -516,12 +521,11 @@ class _Builder:
         if self.access is not None:
             self.access = Access(self.cells, self.footing[1], self.model.grid.default)
 
-    def _ahead_here(self, state, todo, level, late, set_aside, blockers, lowest):
-        """An atom of a later support level written from where the agent stands, when
-        it is ready and its cell is in no standing place that an atom of a lower level
+    def _ahead(self, state, todo, level, late, set_aside, blockers, lowest):
+        """Whether an atom of a later support level may be written now: when it is ready and its cell is in no standing place that an atom of a lower level
         still needs (with footing there, or a goal atom to stand on): the walls go up
-        several levels a pass (a cell behind the agent, at its feet or head), not one. The
-        step [(action, state)], or None."""
+        several levels a pass (a cell behind the agent, at its feet or head), not one. None
+        without access."""
         if self.access is None:
             return None
         read, cells, default = self.read, self.cells, self.model.grid.default
@@ -542,7 +546,7 @@ class _Builder:
                 return False
             return not self._walls_in(p) and \
                 not self.access.in_the_way(p, todo, lambda q: level.get(q, late) < mine, footed)
-        return self._finish(state, todo, ok, 0)
+        return ok
 
     def _run(self, start, reached):
         self._plan_supports(start)
@@ -578,12 +582,18 @@ class _Builder:
                 self.exhausted.update((v, len(plan)) for v in short)
                 if not todo:
                     return plan, state, None
-            path = self._ahead_here(state, todo, level, late, set_aside, blockers, lowest)
+            ahead = self._ahead(state, todo, level, late, set_aside, blockers, lowest)
+            path = self._finish(state, todo, ahead, 0) if ahead else None
+            score = None
+            if ahead:
+                def score(s):   # atoms writable where the walk ends: of the nearest, the busiest place
+                    return len({pos for pos, _ in self.by_place.get(self.model.agent_position(s), ())
+                                if pos in todo and read(s, *pos) != todo[pos] and (eligible(pos) or ahead(pos))})
             if path is None and len(self.returnable) < len(self.walkers):
                 path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit,
-                                 walkers=self.returnable)
+                                 walkers=self.returnable, score=score)
             if path is None:
-                path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit)
+                path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit, score=score)
             why = "ok" if path is not None else None
             if path is None:
                 candidates = self._nearest(state, todo, eligible)
