@@ -414,6 +414,17 @@ def _goal_positions(an: Analysis, reach, goal_ir, position, static_pos, position
     return tuple(sorted(found))
 
 
+def facing_slot(d: Dungeon, layout) -> tuple | None:
+    """(the agent's facing attribute: its name, its definition, its state slot or None
+    when the layout keeps no slot for it), or None when the domain binds no facing."""
+    attr = (d.domain.binding.get("agent_fields") or {}).get("facing")
+    cls_name = d.objects[d.agent_name][0]
+    adef = d.domain.classes[cls_name].attrs.get(attr) if attr else None
+    if adef is None:
+        return None
+    return attr, adef, layout.by_var.get(ir.StateVar(d.agent_name, cls_name, attr, adef.type))
+
+
 def _display(d: Dungeon, layout) -> dict:
     """What `bcc show` needs to draw a state: legend glyphs and the agent's facing."""
     legend_src = d.legend_columns
@@ -423,12 +434,10 @@ def _display(d: Dungeon, layout) -> dict:
         key = tuple(column)
         if key not in glyphs or glyphs[key] == start_char:
             glyphs[key] = ch
-    cls_name = d.objects[d.agent_name][0]
     facing = None
-    attr = (d.domain.binding.get("agent_fields") or {}).get("facing")
-    if attr:
-        adef = d.domain.classes[cls_name].attrs[attr]
-        slot = layout.by_var.get(ir.StateVar(d.agent_name, cls_name, attr, adef.type))
+    found = facing_slot(d, layout)
+    if found:
+        attr, adef, slot = found
         by_value = {v: k for k, v in adef.names.items()}
         facing = {"index": slot.index if slot else None, "lo": slot.lo if slot else 0,
                   "value": d.objects[d.agent_name][1].get(attr), "names": by_value}

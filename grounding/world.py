@@ -144,14 +144,11 @@ def _cells(space, walk: _Walk, room_of: dict, thing_rooms: dict) -> Cells | None
     """The map's cells (Cells), or None when moving does not follow a facing with names.
     A thing's cell counts as one the agent may stand on (once the thing is pushed on), in
     the thing's room."""
-    from ..compiler import ir, pipeline as c
+    from ..compiler import pipeline as c
     dungeon = space.predicates.dungeon
     layout = space.predicates._layout
     model = space.model
-    cls = dungeon.objects[dungeon.agent_name][0]
-    attr = (dungeon.domain.binding.get("agent_fields") or {}).get("facing")
-    adef = dungeon.domain.classes[cls].attrs.get(attr) if attr else None
-    slot = layout.by_var.get(ir.StateVar(dungeon.agent_name, cls, attr, adef.type)) if adef else None
+    _, adef, slot = c.facing_slot(dungeon, layout) or (None, None, None)
     if slot is None or not adef.names:
         return None
     position, _, variables = c._position(dungeon, layout)
