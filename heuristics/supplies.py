@@ -12,7 +12,7 @@ Nothing here knows what the variables mean; it reads only IR shapes.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from ..compiler import ir
 
@@ -22,7 +22,7 @@ class Supplies:
     uses: dict          # goal value -> ((StateVar, amount), ...) every achiever of it takes
     suppliers: dict     # StateVar -> [action index] that may raise it
     slots: dict         # StateVar -> (state index, lo)
-    refills: dict = None   # StateVar -> ((StateVar taken, amount given per one taken), ...)
+    refills: dict = field(default_factory=dict)   # StateVar -> ((StateVar taken, amount given per one taken), ...)
 
     def value(self, state: bytes, var) -> int:
         index, lo = self.slots[var]
@@ -32,7 +32,7 @@ class Supplies:
         """What of `var` the state holds, counting what the suppliers that turn another
         held variable into it would give (a closed stack of blocks is blocks held)."""
         out = self.value(state, var)
-        for other, amount in (self.refills or {}).get(var, ()):
+        for other, amount in self.refills.get(var, ()):
             if other in self.slots:
                 out += self.value(state, other) * amount
         return out

@@ -105,8 +105,7 @@ class _Builder:
             self.rests_on[v] = set.intersection(*units)
         spare = [r for v, r in self.rests_on.items() if v is not None and v != model.grid.default and cells.achievers[v]]
         self.rests_on_any = set.intersection(*spare) if spare else set()   # what any written block rests on
-        self.goal = {pos for pos, _ in cells.atoms}   # the goal's cells (planned supports join `cells` later)
-        self.goal_values = dict(cells.atoms)
+        self.goal = dict(cells.atoms)   # the goal's cells -> values (planned supports join `cells` later)
         # how many support levels above the lowest pending one a write ahead may go: the
         # spread of the cells one standing place writes (three heights: two levels)
         offsets = [a.write for lst in cells.achievers.values() for a in lst if not a.moves]
@@ -522,14 +521,15 @@ class _Builder:
             self.access = Access(self.cells, self.footing[1], self.model.grid.default)
 
     def _ahead(self, state, todo, level, late, set_aside, blockers, lowest):
-        """Whether an atom of a later support level may be written now: when it is ready and its cell is in no standing place that an atom of a lower level
-        still needs (with footing there, or a goal atom to stand on): the walls go up
-        several levels a pass (a cell behind the agent, at its feet or head), not one. None
-        without access."""
+        """The test (on a position) whether the atom of a later support level there may
+        be written now: it is ready, at most `reach_span` levels above `lowest`, and its
+        cell is in no standing place that an atom of a lower level still needs (with
+        footing there, or a goal atom to stand on). Walls go up several levels a pass (a
+        cell behind the agent, at its feet or head), not one. None without access."""
         if self.access is None:
             return None
         read, cells, default = self.read, self.cells, self.model.grid.default
-        goal = self.goal_values
+        goal = self.goal
 
         def footed(place):
             for dx, dy, dz in self.footing[0]:

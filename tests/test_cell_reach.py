@@ -143,7 +143,7 @@ def test_the_fallback_rule_asks_about_the_goal_not_the_planned_supports(tmp_path
     stone = model.grid.value_names.index("stone")
     b.cells = dataclasses.replace(cells, atoms=[*cells.atoms, ((4, 2, 0), stone)])   # over the gap
     assert _never(b, model.initial) == [] and search_may_help(b, model.initial)
-    b.goal.add((4, 2, 0))
+    b.goal[(4, 2, 0)] = stone
     assert _never(b, model.initial) == [((4, 2, 0), stone)] and not search_may_help(b, model.initial)
 
 
