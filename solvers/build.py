@@ -520,16 +520,16 @@ class _Builder:
         if self.access is not None:
             self.access = Access(self.cells, self.footing[1], self.model.grid.default)
 
-    def _ahead(self, state, todo, level, late, set_aside, blockers, lowest):
+    def _ahead(self, state, todo, level, late, lowest, open_now):
         """The test (on a position) whether the atom of a later support level there may
-        be written now: it is ready, at most `reach_span` levels above `lowest`, and its
-        cell is in no standing place that an atom of a lower level still needs (with
-        footing there, or a goal atom to stand on). Walls go up several levels a pass (a
-        cell behind the agent, at its feet or head), not one. None without access."""
+        be written now: `open_now` holds of it, it is at most `reach_span` levels above
+        `lowest`, and its cell is in no standing place that an atom of a lower level still
+        needs (with footing there, or a goal atom to stand on). Walls go up several levels
+        a pass (a cell behind the agent, at its feet or head), not one. None without
+        access."""
         if self.access is None:
             return None
-        read, cells, default = self.read, self.cells, self.model.grid.default
-        goal = self.goal
+        read, default, goal = self.read, self.model.grid.default, self.goal
 
         def footed(place):
             for dx, dy, dz in self.footing[0]:
@@ -539,12 +539,8 @@ class _Builder:
             return True
 
         def ok(p):
-            if p in set_aside or blockers.get(p, 0) > 0 or not ready(cells, read, state, (p, todo[p])):
-                return False
             mine = level.get(p, late)
-            if mine > lowest + self.reach_span:
-                return False
-            return not self._walls_in(p) and \
+            return mine <= lowest + self.reach_span and open_now(p) and \
                 not self.access.in_the_way(p, todo, lambda q: level.get(q, late) < mine, footed)
         return ok
 
@@ -564,9 +560,12 @@ class _Builder:
                 return plan, state, which
             lowest = min((level.get(p, late) for p in todo if p not in set_aside), default=late)
 
-            def eligible(p):
-                return level.get(p, late) <= lowest and p not in set_aside and blockers.get(p, 0) <= 0 \
+            def open_now(p):   # not set aside, waits for nothing, ready, walls nothing in
+                return p not in set_aside and blockers.get(p, 0) <= 0 \
                     and ready(cells, read, state, (p, todo[p])) and not self._walls_in(p)
+
+            def eligible(p):
+                return level.get(p, late) <= lowest and open_now(p)
             short = self._short(state, todo, plan)
             if short:   # gather what writing the pending atoms takes, nearest first
                 if not todo:   # no atom left to stand for: earlier footing may be taken
@@ -582,18 +581,19 @@ class _Builder:
                 self.exhausted.update((v, len(plan)) for v in short)
                 if not todo:
                     return plan, state, None
-            ahead = self._ahead(state, todo, level, late, set_aside, blockers, lowest)
+            ahead = self._ahead(state, todo, level, late, lowest, open_now)
             path = self._finish(state, todo, ahead, 0) if ahead else None
             score = None
             if ahead:
                 def score(s):   # atoms writable where the walk ends: of the nearest, the busiest place
                     return len({pos for pos, _ in self.by_place.get(self.model.agent_position(s), ())
                                 if pos in todo and read(s, *pos) != todo[pos] and (eligible(pos) or ahead(pos))})
+            def finish(s):
+                return self._finish(s, todo, eligible, LIFTS)
             if path is None and len(self.returnable) < len(self.walkers):
-                path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit,
-                                 walkers=self.returnable, score=score)
+                path = self.walk(state, finish, self.local_limit, walkers=self.returnable, score=score)
             if path is None:
-                path = self.walk(state, lambda s: self._finish(s, todo, eligible, LIFTS), self.local_limit, score=score)
+                path = self.walk(state, finish, self.local_limit, score=score)
             why = "ok" if path is not None else None
             if path is None:
                 candidates = self._nearest(state, todo, eligible)
