@@ -26,6 +26,7 @@ from ..heuristics.cell_reach import goal_never_holds
 from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound, orders, ready, support_levels
 from ..heuristics.supplies import supplies, wanted
 from .access import Access, exit_orders
+from .gather import gather
 from .scaffold import CANDIDATES, make_solid, planned_supports, stand_near, write_cell
 from ..errors import ModelError
 from .base import Budget, Meter, Result
@@ -33,7 +34,6 @@ from .options import Option, declare
 
 NAME = "build"
 LIFTS = 2          # actions that write and move tried at the end of a walk (a climb, twice)
-GATHER_LIMIT = 100_000   # states a walk to a supply may visit (positions, in effect)
 IMPROVE_UP_TO = 40       # plans this short are handed to A* for a shorter one
 RETRY = 8          # atoms achieved before a set-aside atom is tried again
 
@@ -232,10 +232,11 @@ class _Builder:
         value, held = self.supplies.value, self.supplies.held
         return any(value(n, var) < value(s, var) and held(n, var) < keep for var, keep in floor.items())
 
-    def search(self, state, done, places, floor=None):
+    def search(self, state, done, places, floor=None, avoid=None):
         """Greedy from `state` to one where `done(s)`, h = 1 + the distance to the nearest
-        of `places`, changing no protected atom and spending nothing `floor` keeps (except
-        on the last step): (path, "ok" | "failed" | budget name)."""
+        of `places`, changing no protected atom, spending nothing `floor` keeps (except
+        on the last step) and taking no step `avoid(s, a)` rules out: (path, "ok" |
+        "failed" | budget name)."""
         agent = self.model.agent_position
         near = {}   # position -> 1 + its distance to the nearest place (states share positions)
 
@@ -276,6 +277,8 @@ class _Builder:
                     continue
                 if floor and self._spends(s, n, floor) and not done(n):
                     continue
+                if avoid is not None and avoid(s, a):
+                    continue
                 parents[n] = (s, a)
                 heapq.heappush(frontier, (h(n), g + 1, next(tie), n))
         return None, "failed"
@@ -308,66 +311,9 @@ class _Builder:
         return out
 
     def gather(self, state, short, todo, footing: bool = True):
-        """The nearest way to raise one of the `short` variables: a walk ending with a
-        supplier (or a walk that picks something up), else a greedy search toward the cells
-        that hold a value taking it. (path, "ok" | "failed" | budget name)."""
-        sup, apply = self.supplies, self.model.apply_fns
-        before = {v: sup.value(state, v) for v in short}
-        reserved = self._reserved(todo) | self.keep
-        suppliers = sorted({a for v in short for a in sup.suppliers.get(v, ())})
-
-        def gained(n):
-            return any(sup.value(n, v) > k for v, k in before.items())
-
-        def touches_reserved(s, a):
-            offs = self.writes.get(a, ())
-            if not offs:
-                return False
-            x, y, z = self.model.agent_position(s)
-            return any((x + dx, y + dy, z + dz) in reserved for dx, dy, dz in offs)
-
-        def finish(s):
-            if s is not state and gained(s):
-                return []
-            for a in suppliers:
-                try:
-                    n = apply[a](s)
-                except ModelError:
-                    continue
-                if n is not None and gained(n) and not self.model.is_failure(n) \
-                        and not self.breaks_protected(s, a, n) and not touches_reserved(s, a):
-                    return [(a, n)]
-            return None
-        path = self.walk(state, finish, GATHER_LIMIT)
-        if path:
-            return path, "ok"
-        if footing and self.clearers:   # blocked in: a walk that may also clear cells in its way
-            walkers, self.walkers = self.walkers, self.walkers + self.clearers
-            try:   # (a place is reached once, however cleared: the first way there is kept)
-                path = self.walk(state, finish, GATHER_LIMIT, keep=reserved | set(self.protected))
-            finally:
-                self.walkers = walkers
-            if path:
-                return path, "ok"
-        # no walk reaches a supplier: search toward the cells holding a value that takes one
-        values = {v for v, lst in sup.uses.items() for var, _ in lst if var in short}
-        grid = self.model.grid.array(state)
-        import numpy
-        cells = [(int(x), int(y), int(z)) for v in values for y, z, x in numpy.argwhere(grid == v)]
-        cells = [c for c in cells if c not in reserved and c not in self.protected]
-        offsets = {o for a in suppliers for o in (self.writes.get(a) or ())}
-        places = [(x - o[0], y - o[1], z - o[2]) for x, y, z in cells for o in offsets]
-        if not places:
-            return None, "failed"
-        pre = stand_near(self, state, places, todo) if footing else None   # (footing gathers without footing)
-        if pre:
-            walk = self.walk(pre[-1][1], finish, GATHER_LIMIT)
-            if walk is not None:
-                return pre + walk, "ok"
-            walk, why = self.search(pre[-1][1], gained, places, self._floor(todo))   # the last steps in
-            if walk is not None:
-                return pre + walk, why
-        return self.search(state, gained, places, self._floor(todo))
+        """The nearest way to raise one of the `short` variables (solvers/gather.py):
+        (path, "ok" | "failed" | budget name)."""
+        return gather(self, state, short, todo, footing)
 
     def prepare(self, state, pos, todo):
         """Footing first, then the atom at `pos`: what it rests on (cells outside the goal,

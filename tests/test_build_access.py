@@ -294,3 +294,45 @@ def test_a_generated_house_is_built_within_half_again_its_lower_bound(tmp_path):
     result = get_solver("build")(model, Budget(time_limit=60))
     assert result.solved and replays(model, result.plan)
     assert len(result.plan) <= 1.5 * result.lower_bound
+
+
+PERCH = """\
+dungeon: perch
+domain: builder
+width: 5
+depth: 3
+height: 6
+blocks: |
+  0..4 0 0..2 bedrock
+  0..4 1..5 0 bedrock
+  0..4 1..5 2 bedrock
+  1 1 1 stone
+  4 1..2 1 bedrock
+  4 3 1 stone
+stock:
+  - {name: stones, kind: stone, count: 0}
+agent:
+  start: [1, 2, 1]
+goal: 1 <= stones.count
+"""
+
+
+def test_gathering_never_takes_the_footing_in_use(tmp_path):
+    # the agent stands on the stone at (1, 1, 1), footing built for the atom in hand
+    # (`keep`); the only other stone tops a pillar at (4, 3, 1), broken only from
+    # (3, 3, 1), whose footing needs a block the agent does not carry. Dropping east and
+    # breaking west would gain a stone in two steps, by taking the footing: no gathering
+    # walk or search may do that, so there is no way (and with nothing kept, that way is
+    # found)
+    from bcc.solvers.gather import gather
+    path = tmp_path / "perch.yaml"
+    path.write_text(PERCH)
+    model = compile_dungeon(str(path))
+    b = builder_of(model)
+    short = {var: 1 for var in b.supplies.slots if var.owner == "stones"}
+    b.keep = {(1, 1, 1)}
+    steps, why = gather(b, model.initial, short, {})
+    assert steps is None and why == "failed"
+    b.keep = set()
+    steps, why = gather(b, model.initial, short, {})
+    assert why == "ok" and b.read(steps[-1][1], 1, 1, 1) == model.grid.default
