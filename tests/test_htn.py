@@ -73,6 +73,42 @@ def test_no_plan_when_every_decomposition_fails(tmp_path):
     assert result.status == "no_solution" and not result.solved
 
 
+def test_a_network_that_can_no_longer_add_a_goal_atom_is_dropped(monkeypatch):
+    # flags-1: the goal (flagged) is added only by `raise`. m-tour and m-flag tie on the
+    # estimate (2 each: the method and one step, `tour` costing 1 by m-done), so m-tour is
+    # tried first; `tour` reaches only `visit`, which never adds (flagged): the network
+    # (tour) is dropped before it is expanded, and m-flag raises the flag. Expanded: `top`
+    # alone. Without the cut, `tour` is expanded once in each of the 2^8 states of seen
+    # spots (every subset; a state met again is cut by loop detection) before the search
+    # backs up to m-flag: 1 + 256.
+    from bcc.solvers.htn import hddl_network
+    result = htn(load("flags", "flags-1"), Budget(time_limit=30))
+    assert result.solved and result.plan == ["(raise)"] and result.expanded == 1
+    real = hddl_network.HddlNetwork.__init__
+
+    def without_cut(self, problem):
+        real(self, problem)
+        self.goal_atoms = []
+    monkeypatch.setattr(hddl_network.HddlNetwork, "__init__", without_cut)
+    result = htn(load("flags", "flags-1"), Budget(time_limit=30))
+    assert result.solved and result.plan == ["(raise)"] and result.expanded == 1 + 2 ** 8
+
+
+def test_goal_reach_masks_close_over_recursive_methods():
+    # a -> b -> a (recursion) and b -> act2; act1 adds (p x), act2 adds (p ?v) (any p:
+    # both goal atoms of p) and (q); goal atoms [(p x), (p y), (q)]: act1 {0}, act2
+    # {0, 1, 2}; a and b both reach act2 (act1 is produced by no task); c produces nothing
+    from types import SimpleNamespace as E
+    from bcc.solvers.htn.goal_reach import reach_masks, unmet
+    atoms = [("p", ("x",)), ("p", ("y",)), ("q", ())]
+    actions = {"act1": [E(add=True, pred="p", args=("x",))],
+               "act2": [E(add=True, pred="p", args=("?v",)), E(add=True, pred="q", args=()),
+                        E(add=False, pred="p", args=("x",))]}
+    masks = reach_masks(actions, {"a": [["b"]], "b": [["a"], ["act2"]], "c": [[]]}, atoms)
+    assert masks == {"act1": 0b001, "act2": 0b111, "a": 0b111, "b": 0b111, "c": 0}
+    assert unmet(atoms, {("p", ("y",))}) == 0b101
+
+
 def test_the_state_budget_stops_the_search():
     result = htn(load("delivery", "delivery-2"), Budget(max_states=1, time_limit=30))
     assert result.status == "budget" and result.budget == "max_states"

@@ -15,8 +15,9 @@ left recursion (get-to = get-to somewhere else, then drive), whose networks grow
 end and never repeat. HyperTensioN cuts the same; in principle it can cut a plan whose
 inner copy of the task needs the tasks queued after it, which no IPC domain here needs.
 
-The network is a linked list (hash, name, args, id, rest): pushing a method's subtasks
-shares the rest, and each node's hash covers the tasks below it.
+The network is a linked list (hash, name, args, id, rest, mask): pushing a method's
+subtasks shares the rest, and each node's hash covers the tasks below it, its mask the
+goal atoms they may still add (goal_reach.py).
 
 The search is the one for both front ends. What it plans with (`net`) answers four
 questions, and what it changes (`state`) is undone by marks:
@@ -26,6 +27,10 @@ questions, and what it changes (`state`) is undone by marks:
     net.expansions(name, args, state)  [(estimate, method, ground subtasks)], least first;
                                      name None: the initial network's
     net.goal_holds(state)            whether the goal holds once the network is done
+    net.goal_atoms, net.reach, net.unmet(state)
+                                     goal_reach.py's cut: the goal's atoms, the mask of
+                                     those each task or action name may add, those that
+                                     do not hold now (a network that misses one is dropped)
     state.hash, state.mark(), state.undo(mark)
 
 HDDL problems answer them with lifted facts (hddl_network.py, facts.py), compiled
@@ -64,13 +69,17 @@ def run_search(c, facts, meter, budget) -> Outcome:
     expanded = generated = 0
     max_states = budget.max_states
 
+    reach = c.reach
+    cut = bool(c.goal_atoms)   # goal_reach.py: a network that can no longer add an unmet goal atom
+
     def push(subtasks, rest):
         ids = []
         net = rest
         for name, args in reversed(subtasks):
             counter[0] += 1
             ids.append(counter[0])
-            net = (hash((name, args, net[0] if net else 0)), name, args, counter[0], net)
+            net = (hash((name, args, net[0] if net else 0)), name, args, counter[0], net,
+                   reach.get(name, 0) | (net[5] if net else 0))
         ids.reverse()
         return net, ids
 
@@ -95,7 +104,7 @@ def run_search(c, facts, meter, budget) -> Outcome:
             choices.pop()
         return False
 
-    root = (0, None, (), ROOT_ID, None)   # the problem's network, decomposed by its one "method"
+    root = (0, None, (), ROOT_ID, None, 0)   # the problem's network, decomposed by its one "method"
     alts = c.expansions(None, (), facts)
     net = False
     if alts:
@@ -107,7 +116,10 @@ def run_search(c, facts, meter, budget) -> Outcome:
                 return Outcome("solved", plan, decomps, expanded, generated, len(visited))
             net = backtrack()
             continue
-        _, name, args, uid, rest = net
+        _, name, args, uid, rest, mask = net
+        if cut and c.unmet(facts) & ~mask:
+            net = backtrack()
+            continue
         if name in c.actions:
             if c.apply(name, args, facts):
                 plan.append((uid, name, args))
