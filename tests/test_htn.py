@@ -94,19 +94,31 @@ def test_a_network_that_can_no_longer_add_a_goal_atom_is_dropped(monkeypatch):
     assert result.solved and result.plan == ["(raise)"] and result.expanded == 1 + 2 ** 8
 
 
-def test_goal_reach_masks_close_over_recursive_methods():
-    # a -> b -> a (recursion) and b -> act2; act1 adds (p x), act2 adds (p ?v) (any p:
-    # both goal atoms of p) and (q); goal atoms [(p x), (p y), (q)]: act1 {0}, act2
-    # {0, 1, 2}; a and b both reach act2 (act1 is produced by no task); c produces nothing
-    from types import SimpleNamespace as E
-    from bcc.solvers.htn.goal_reach import reach_masks, unmet
-    atoms = [("p", ("x",)), ("p", ("y",)), ("q", ())]
-    actions = {"act1": [E(add=True, pred="p", args=("x",))],
-               "act2": [E(add=True, pred="p", args=("?v",)), E(add=True, pred="q", args=()),
-                        E(add=False, pred="p", args=("x",))]}
-    masks = reach_masks(actions, {"a": [["b"]], "b": [["a"], ["act2"]], "c": [[]]}, atoms)
-    assert masks == {"act1": 0b001, "act2": 0b111, "a": 0b111, "b": 0b111, "c": 0}
-    assert unmet(atoms, {("p", ("y",))}) == 0b101
+def test_goal_reach_needs_the_chain_of_adders_and_reads_task_arguments():
+    # goal (l2). obs2 alone adds it and requires (l1); obs1 adds (l1), requiring nothing:
+    # needed atoms [(l2), (l1) for (l2)]. (l1) is unmet only while (l2) is.
+    # Task t ?a: m-obs (= ?a x) -> obs2; m-other -> noop; r -> r (recursion) or t ?b.
+    # t x may add (l2) (bit 0); t y may not (m-obs's constraint fails); t with its
+    # argument unknown may; r reaches t with an unknown argument, so it may too.
+    from types import SimpleNamespace as N
+    from bcc.pddl_io.lifted_types import TRUE
+    from bcc.solvers.htn.goal_reach import GoalReach
+
+    def effect(pred, *args):
+        return N(add=True, pred=pred, args=args, params=(), cond=TRUE)
+    actions = [N(name="obs1", pre=TRUE, effects=[effect("l1")]),
+               N(name="obs2", pre=("atom", "l1", ()), effects=[effect("l2")]),
+               N(name="noop", pre=TRUE, effects=[])]
+    methods = {"t": [N(task=("t", ("?a",)), pre=("=", "?a", "x"), subtasks=(("obs2", ()),)),
+                     N(task=("t", ("?a",)), pre=TRUE, subtasks=(("noop", ()),))],
+               "r": [N(task=("r", ()), pre=TRUE, subtasks=(("r", ()),)),
+                     N(task=("r", ()), pre=TRUE, subtasks=(("t", ("?b",)),))]}
+    reach = GoalReach(("atom", "l2", ()), actions, methods)
+    assert reach.atoms == [("l2", ()), ("l1", ())] and reach.parent == [-1, 0]
+    assert reach.unmet(set()) == 0b11 and reach.unmet({("l1", ())}) == 0b01 and reach.unmet({("l2", ())}) == 0
+    assert reach.mask("obs1", ()) == 0b10 and reach.mask("obs2", ()) == 0b01
+    assert reach.mask("t", ("x",)) == 0b01 and reach.mask("t", ("y",)) == 0 and reach.mask("t", (None,)) == 0b01
+    assert reach.mask("r", ()) == 0b01
 
 
 def test_the_state_budget_stops_the_search():

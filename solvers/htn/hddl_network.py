@@ -7,7 +7,7 @@ import math
 from ...pddl_io.lifted_types import TRUE, conjuncts, is_a
 from .bind import Join, Objects, holds, is_var
 from .estimate import method_cost, task_costs
-from .goal_reach import goal_atoms, reach_masks, unmet
+from .goal_reach import GoalReach
 
 
 class HddlNetwork:
@@ -37,10 +37,9 @@ class HddlNetwork:
                                                             for _, j in effects if j is not None]
         joins += [entry[2] for entries in self.methods.values() for entry in entries] + [self.root[2]]
         self.patterns = {(step[1], step[2]) for j in joins for step in j.steps if step[0] == "match"}
-        self.goal_atoms = goal_atoms(self.goal)   # the cut of goal_reach.py
-        self.reach = reach_masks({a.name: a.effects for a in dom.actions},
-                                 {t: [[n for n, _ in e[0].subtasks] for e in entries] for t, entries in self.methods.items()},
-                                 self.goal_atoms)
+        self.goal_reach = GoalReach(self.goal, dom.actions, {t: [e[0] for e in entries] for t, entries in self.methods.items()})
+        self.goal_atoms = self.goal_reach.atoms   # goal_reach.py's cut: what the network must still add
+        self.task_mask = self.goal_reach.mask
 
     def _method(self, m, htn, dom) -> tuple:
         """(method, how its task's arguments bind its variables, its join, its estimate)."""
@@ -140,7 +139,7 @@ class HddlNetwork:
 
     def unmet(self, facts) -> int:
         """The goal atoms (goal_reach.py's bits) that do not hold now."""
-        return unmet(self.goal_atoms, facts.facts)
+        return self.goal_reach.unmet(facts.facts)
 
     @staticmethod
     def action_text(name: str, args: tuple) -> str:

@@ -63,7 +63,7 @@ class ModelNetwork:
                     self.methods.setdefault(task, []).append((est, v, v.objects, v.values, v.fn))
         root = hierarchy.root
         self.root = [(0, root, (), (), root.fn)]
-        self.goal_atoms, self.reach = [], {}   # a dungeon's goal is a state condition: goal_reach.py cuts nothing
+        self.goal_atoms = []   # a dungeon's goal is a state condition: goal_reach.py cuts nothing
 
     def expansions(self, name, args: tuple, state: StateStack) -> list:
         """(estimate, method, ground subtasks) for every way to decompose the task here,
@@ -102,6 +102,10 @@ class ModelNetwork:
 
     @staticmethod
     def unmet(state: StateStack) -> int:
+        return 0
+
+    @staticmethod
+    def task_mask(name, args: tuple) -> int:
         return 0
 
     def action_text(self, name: int, args: tuple) -> str:

@@ -27,9 +27,9 @@ questions, and what it changes (`state`) is undone by marks:
     net.expansions(name, args, state)  [(estimate, method, ground subtasks)], least first;
                                      name None: the initial network's
     net.goal_holds(state)            whether the goal holds once the network is done
-    net.goal_atoms, net.reach, net.unmet(state)
-                                     goal_reach.py's cut: the goal's atoms, the mask of
-                                     those each task or action name may add, those that
+    net.goal_atoms, net.task_mask(name, args), net.unmet(state)
+                                     goal_reach.py's cut: the atoms the goal needs, the
+                                     mask of those a task or action may add, those that
                                      do not hold now (a network that misses one is dropped)
     state.hash, state.mark(), state.undo(mark)
 
@@ -69,8 +69,8 @@ def run_search(c, facts, meter, budget) -> Outcome:
     expanded = generated = 0
     max_states = budget.max_states
 
-    reach = c.reach
     cut = bool(c.goal_atoms)   # goal_reach.py: a network that can no longer add an unmet goal atom
+    task_mask = c.task_mask if cut else (lambda name, args: 0)
 
     def push(subtasks, rest):
         ids = []
@@ -79,7 +79,7 @@ def run_search(c, facts, meter, budget) -> Outcome:
             counter[0] += 1
             ids.append(counter[0])
             net = (hash((name, args, net[0] if net else 0)), name, args, counter[0], net,
-                   reach.get(name, 0) | (net[5] if net else 0))
+                   task_mask(name, args) | (net[5] if net else 0))
         ids.reverse()
         return net, ids
 
