@@ -67,7 +67,7 @@ def needed_atoms(goal, actions) -> tuple:
         for a in actions:
             for e in a.effects:
                 env = _match(e, atoms[i])
-                if env is not None and not e.params:
+                if env is not None:   # (a forall effect too: its instance that adds the atom has these bindings)
                     pre = set(_ground_atoms(a.pre, env)) | set(_ground_atoms(e.cond, env))
                     common = pre if common is None else common & pre
         for f in sorted(common or ()):
