@@ -63,7 +63,7 @@ class ModelNetwork:
                     self.methods.setdefault(task, []).append((est, v, v.objects, v.values, v.fn))
         root = hierarchy.root
         self.root = [(0, root, (), (), root.fn)]
-        self.goal_atoms = []   # a dungeon's goal is a state condition: goal_reach.py cuts nothing
+        self.goal_atoms = []   # a dungeon's goal is a state condition: goal_reach.py cuts nothing (and asks nothing more)
 
     def expansions(self, name, args: tuple, state: StateStack) -> list:
         """(estimate, method, ground subtasks) for every way to decompose the task here,
@@ -99,14 +99,6 @@ class ModelNetwork:
 
     def goal_holds(self, state: StateStack) -> bool:
         return self.is_goal(state.current)
-
-    @staticmethod
-    def unmet(state: StateStack) -> int:
-        return 0
-
-    @staticmethod
-    def task_mask(name, args: tuple) -> int:
-        return 0
 
     def action_text(self, name: int, args: tuple) -> str:
         return self.model.action_names[name]

@@ -19,7 +19,7 @@ The network is a linked list (hash, name, args, id, rest, mask): pushing a metho
 subtasks shares the rest, and each node's hash covers the tasks below it, its mask the
 goal atoms they may still add (goal_reach.py).
 
-The search is the one for both front ends. What it plans with (`net`) answers four
+The search is the one for both front ends. What it plans with (`net`) answers these
 questions, and what it changes (`state`) is undone by marks:
 
     net.actions                      the names of actions (anything else is a compound task)
@@ -27,10 +27,10 @@ questions, and what it changes (`state`) is undone by marks:
     net.expansions(name, args, state)  [(estimate, method, ground subtasks)], least first;
                                      name None: the initial network's
     net.goal_holds(state)            whether the goal holds once the network is done
-    net.goal_atoms, net.task_mask(name, args), net.unmet(state)
-                                     goal_reach.py's cut: the atoms the goal needs, the
-                                     mask of those a task or action may add, those that
-                                     do not hold now (a network that misses one is dropped)
+    net.goal_atoms                   goal_reach.py's cut: the atoms the goal needs; where
+                                     there are any, also net.task_mask(name, args) (those
+    net.unmet(state)                 a task or action may add) and net.unmet (those that
+                                     do not hold now): a network that misses one is dropped
     state.hash, state.mark(), state.undo(mark)
 
 HDDL problems answer them with lifted facts (hddl_network.py, facts.py), compiled
