@@ -28,9 +28,10 @@ questions, and what it changes (`state`) is undone by marks:
                                      name None: the initial network's
     net.goal_holds(state)            whether the goal holds once the network is done
     net.goal_atoms                   goal_reach.py's cut: the atoms the goal needs; where
-                                     there are any, also net.task_mask(name, args) (those
-    net.unmet(state)                 a task or action may add) and net.unmet (those that
-                                     do not hold now): a network that misses one is dropped
+                                     there are any, also:
+    net.task_mask(name, args)        those a task or action may add
+    net.unmet(state)                 those that do not hold now (a network whose tasks'
+                                     masks miss one is dropped)
     state.hash, state.mark(), state.undo(mark)
 
 HDDL problems answer them with lifted facts (hddl_network.py, facts.py), compiled
