@@ -120,89 +120,127 @@ def _speller(known: frozenset) -> Speller:
 
 def steps(command: str, world: World) -> list[tuple[set, list]]:
     """The route's steps: [(the step's verb classes, its mentions in order)]."""
-    lex = lexicon()
-    toks = tokens(command, world)
-    room_of_word = {}
-    for room, ws in world.rooms.items():
-        for w in ws:
-            room_of_word.setdefault(w, room)
-    thing_of_word = {w: t for t, (ws, _) in world.things.items() for w in ws}
-    out, verbs, mentions = [], set(), []
-    named_thing = False
+    return _StepReader(tokens(command, world), world).read()
 
-    earlier = []      # the last mention of the steps before
 
-    def close():
-        nonlocal verbs, mentions, earlier
-        earlier = mentions[-1:] or earlier
-        if verbs or mentions:
-            out.append((verbs, mentions))
-        verbs, mentions = set(), []
-    i, n = 0, len(toks)
-    while i < n:
-        t = toks[i]
-        nxt = toks[i + 1] if i + 1 < n else ""
+class _StepReader:
+    """Reads a command's words left to right into steps. Each `_...` method reads the
+    word at `i` as one kind of mention and returns where reading goes on (None: the word
+    is not of its kind)."""
+
+    def __init__(self, toks: list, world: World):
+        self.toks, self.world, self.lex = toks, world, lexicon()
+        self.room_of_word = {}
+        for room, ws in world.rooms.items():
+            for w in ws:
+                self.room_of_word.setdefault(w, room)
+        self.thing_of_word = {w: t for t, (ws, _) in world.things.items() for w in ws}
+        self.out, self.verbs, self.mentions = [], set(), []
+        self.earlier = []          # the last mention of the steps before
+        self.named_thing = False
+
+    def read(self) -> list[tuple[set, list]]:
+        i = 0
+        while i < len(self.toks):
+            i = self._word(i)
+        self._close()
+        return self.out
+
+    def _close(self):
+        self.earlier = self.mentions[-1:] or self.earlier
+        if self.verbs or self.mentions:
+            self.out.append((self.verbs, self.mentions))
+        self.verbs, self.mentions = set(), []
+
+    def _near(self, i: int, span: int, *classes: str) -> bool:
+        """Whether a word of one of `classes` (or a room's name, for "name") is among the
+        `span` words after `i`."""
+        words = self.toks[i + 1:i + 1 + span]
+        return any(w in self.room_of_word if c == "name" else w in self.lex[c] for w in words for c in classes)
+
+    def _word(self, i: int) -> int:
+        toks, lex, t = self.toks, self.lex, self.toks[i]
+        nxt = toks[i + 1] if i + 1 < len(toks) else ""
         if t in lex["then"] and not (t in lex["other"] and (nxt in lex["door"] or nxt in lex["room"])):
-            close()
-            i += 1
-            continue
-        if t in lex["go"] and any(m.kind in ("room", "door") and not m.locates for m in mentions):
-            close()
+            self._close()
+            return i + 1
+        if t in lex["go"] and any(m.kind in ("room", "door") and not m.locates for m in self.mentions):
+            self._close()
         for cls in ("carry", "release", "through", "leave", "back", "into"):
             if t in lex[cls]:
-                verbs.add(cls)
-        if t in room_of_word:
-            named, j = [room_of_word[t]], i + 1
-            while j < n and (toks[j] in room_of_word or toks[j] in ("/", "and", "room")) and \
-                    any(toks[k] in lex["door"] for k in range(j, min(n, j + 3))):
-                if toks[j] in room_of_word:
-                    named.append(room_of_word[toks[j]])
-                j += 1
-            if j < n and toks[j] in lex["room"]:
-                j += 1
-            if j < n and toks[j] in lex["door"]:
-                mentions.append(_Mention("door", "named", frozenset(named), _through(verbs)))
-                i = j + 1
-                continue
-            if j < n and toks[j] in thing_of_word:   # "the red chair": a thing, not a room
-                i += 1
-                continue
-            mentions.append(_Mention("room", "named", named[-1],
-                                     locates="release" not in verbs and _locates(toks, i, mentions, lex)))
-            i = j
-            continue
-        if t in lex["other"] and (mentions or earlier) and not any(
-                toks[k] in lex["door"] or toks[k] in lex["room"] or toks[k] in room_of_word or toks[k] in lex["then"]
-                for k in range(i + 1, min(n, i + 3))):
-            last = (mentions or earlier)[-1]    # "through the first door, then the second"
-            if last.kind in ("door", "room"):
-                mentions.append(_Mention(last.kind, "other", None, last.through))
-                i += 1
-                continue
+                self.verbs.add(cls)
+        if t in self.room_of_word:
+            return self._named_room(i)
+        j = self._other(i)
+        if j is not None:
+            return j
         if t in lex["door"] and not (t in lex["leave"] and nxt not in ("door", "doorway")):
-            rest = [w for w in toks[i + 1:i + 6] if w not in ("the", "a", "an", "that", "which", "leads", "leading",
-                                                               "goes", "going")]
-            if len(rest) >= 2 and rest[0] in ("of", "to", "into", "for") and rest[1] in room_of_word:
-                # "the door to the green room", "the door of the red room"
-                mentions.append(_Mention("door", "named", frozenset({room_of_word[rest[1]]}), _through(verbs)))
-                i = toks.index(rest[1], i + 1)     # the room is a mention too: the door leads there
-                continue
-            mentions.append(_Mention("door", _modifier(toks, i, lex, door=True), None, _through(verbs)))
-        elif t in lex["room"]:
+            return self._door(i)
+        if t in lex["room"]:
             how = _modifier(toks, i, lex, door=False)
-            mentions.append(_Mention("room", how, toks[i - 1] if how == "word" else None,
-                                     locates="release" not in verbs and _locates(toks, i - (how == "word"), mentions, lex)))
-        elif t in thing_of_word or (t in lex["thing"] and world.things and (t != "it" or named_thing)) or \
-                (world.things and _handled(toks, i, lex, world)):
-            named_thing = True
-            thing = thing_of_word.get(t) or sorted(world.things)[0]
-            mentions.append(_Mention("thing", "named", thing))
-        elif t in lex["back"] and not any(toks[k] in lex["room"] or toks[k] in lex["door"] or toks[k] in room_of_word
-                                          for k in range(i + 1, min(n, i + 5))):
-            mentions.append(_Mention("back", "back"))
-        i += 1
-    close()
-    return out
+            self.mentions.append(_Mention("room", how, toks[i - 1] if how == "word" else None,
+                                          locates="release" not in self.verbs and
+                                          _locates(toks, i - (how == "word"), self.mentions, lex)))
+        elif self._thing(i):
+            self.named_thing = True
+            self.mentions.append(_Mention("thing", "named", self.thing_of_word.get(t) or sorted(self.world.things)[0]))
+        elif t in lex["back"] and not self._near(i, 4, "room", "door", "name"):
+            self.mentions.append(_Mention("back", "back"))
+        return i + 1
+
+    def _named_room(self, i: int) -> int:
+        """A room by its name ("the green room"), several before a door ("the red/green
+        door"), or the colour of a thing ("the red chair": no mention here)."""
+        toks, lex, n = self.toks, self.lex, len(self.toks)
+        named, j = [self.room_of_word[toks[i]]], i + 1
+        while j < n and (toks[j] in self.room_of_word or toks[j] in ("/", "and", "room")) and \
+                any(toks[k] in lex["door"] for k in range(j, min(n, j + 3))):
+            if toks[j] in self.room_of_word:
+                named.append(self.room_of_word[toks[j]])
+            j += 1
+        if j < n and toks[j] in lex["room"]:
+            j += 1
+        if j < n and toks[j] in lex["door"]:
+            self.mentions.append(_Mention("door", "named", frozenset(named), _through(self.verbs)))
+            return j + 1
+        if j < n and toks[j] in self.thing_of_word:
+            return i + 1
+        self.mentions.append(_Mention("room", "named", named[-1], locates="release" not in self.verbs and
+                                      _locates(toks, i, self.mentions, lex)))
+        return j
+
+    def _other(self, i: int) -> int | None:
+        """ "The other" with no door or room after it: another of the last mention's kind
+        ("through the first door, then the second")."""
+        if self.toks[i] not in self.lex["other"] or not (self.mentions or self.earlier) or \
+                self._near(i, 2, "door", "room", "name", "then"):
+            return None
+        last = (self.mentions or self.earlier)[-1]
+        if last.kind not in ("door", "room"):
+            return None
+        self.mentions.append(_Mention(last.kind, "other", None, last.through))
+        return i + 1
+
+    def _door(self, i: int) -> int:
+        """A door: "the door to the green room" (the room is a mention too: the door leads
+        there), or "the first door", "the other door", "the door"."""
+        toks = self.toks
+        rest = [w for w in toks[i + 1:i + 6] if w not in ("the", "a", "an", "that", "which", "leads", "leading",
+                                                           "goes", "going")]
+        if len(rest) >= 2 and rest[0] in ("of", "to", "into", "for") and rest[1] in self.room_of_word:
+            self.mentions.append(_Mention("door", "named", frozenset({self.room_of_word[rest[1]]}),
+                                          _through(self.verbs)))
+            return toks.index(rest[1], i + 1)
+        self.mentions.append(_Mention("door", _modifier(toks, i, self.lex, door=True), None, _through(self.verbs)))
+        return i + 1
+
+    def _thing(self, i: int) -> bool:
+        """Whether the word names a thing: its name, "the object" or "it" (once a thing
+        was named), or the unknown word after a verb of handling."""
+        t, things = self.toks[i], self.world.things
+        return t in self.thing_of_word or (t in self.lex["thing"] and bool(things) and
+                                           (t != "it" or self.named_thing)) or \
+            bool(things and _handled(self.toks, i, self.lex, self.world))
 
 
 def _handled(toks: list, i: int, lex: dict, world: World) -> bool:
