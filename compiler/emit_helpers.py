@@ -67,6 +67,29 @@ def divide(a, b, modulo, label):
     return a % b if modulo else a // b
 
 
+def one_entry_apart(ds: bytes, dt: bytes, S0: bytes) -> tuple[int, int] | None:
+    """(cell, value) when the changed-cell diffs `ds` and `dt` differ by one entry (one
+    added, one cell's value changed, or one removed: that cell is back at its start value
+    in `S0`), else None. The entries alike from the start are found by a binary search
+    over the bytes. An entry replaced by another cell's (one cell back at its start, one
+    newly changed: a push that moves a box) is two changes, not one."""
+    lo, hi = 0, min(len(ds), len(dt)) // 4
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        if ds[:4 * mid] == dt[:4 * mid]:
+            lo = mid
+        else:
+            hi = mid - 1
+    p = 4 * lo
+    if dt[p + 4:] == ds[p:] or (dt[p + 4:] == ds[p + 4:] and dt[p + 1:p + 4] == ds[p + 1:p + 4]):
+        e = int.from_bytes(dt[p:p + 4], "little")            # one entry added, or one cell's value changed
+        return e >> 8, e & 255
+    if dt[p:] == ds[p + 4:]:                                # one removed: the cell is back at its start
+        e = int.from_bytes(ds[p:p + 4], "little")
+        return e >> 8, S0[e >> 8]
+    return None
+
+
 def _cell_expansion(NV: int, S0: bytes):
     """The cells of a compact state (`NV` bytes of variables, then its changed cells)
     expanded from the start's `S0` (`cells`, `expand`, `derive`; the cache `expanded`,
@@ -99,24 +122,12 @@ def _cell_expansion(NV: int, S0: bytes):
         cs = S0 if not ds else expanded.get(ds)
         if cs is None:
             return
-        lo, hi = 0, min(len(ds), len(dt)) // 4     # entries alike from the start: a binary search
-        while lo < hi:
-            mid = (lo + hi + 1) // 2
-            if ds[:4 * mid] == dt[:4 * mid]:
-                lo = mid
-            else:
-                hi = mid - 1
-        p = 4 * lo
-        if dt[p + 4:] == ds[p:] or dt[p + 4:] == ds[p + 4:]:    # one entry added, or one changed
-            e = int.from_bytes(dt[p:p + 4], "little")
-            value = e & 255
-        elif dt[p:] == ds[p + 4:]:                            # one removed: the cell is back at its start
-            e = int.from_bytes(ds[p:p + 4], "little")
-            value = S0[e >> 8]
-        else:
+        change = one_entry_apart(ds, dt, S0)
+        if change is None:
             return
+        cell, value = change
         c = bytearray(cs)
-        c[e >> 8] = value
+        c[cell] = value
         if len(expanded) >= keep:
             expanded.clear()
         expanded[dt] = bytes(c)

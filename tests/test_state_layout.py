@@ -11,9 +11,13 @@ import random
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bcc.compiler import compile_dungeon
+from bcc.compiler.emit_helpers import one_entry_apart
 from bcc.generate import generate_maze
+from bcc.model import pack_entry
 
 from conftest import compiled
 
@@ -105,3 +109,26 @@ def test_bytes_per_state_do_not_grow_with_the_map(tmp_path):
         assert len(state) == report["start"] + 4 * len(model.view(state).changed())
     sizes = model.state_sizes(2000)
     assert sizes["largest"] <= 64 + 4 * 12
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.dictionaries(st.integers(0, 40), st.integers(0, 255), max_size=12), st.integers(0, 40),
+       st.integers(0, 255), st.integers(0, 40))
+def test_one_entry_apart_finds_the_one_changed_cell(cells, cell, value, other):
+    """Two changed-cell diffs (sorted packed entries of the cells that differ from the
+    start) a single write apart give that write back; diffs further apart give None."""
+    start = bytes(41)
+
+    def diff(changed):
+        return b"".join(pack_entry(k, v) for k, v in sorted(changed.items()) if v != start[k])
+
+    before = diff(cells)
+    after_cells = {**cells, cell: value}
+    after = diff(after_cells)
+    found = one_entry_apart(before, after, start)
+    if before == after:
+        return                       # no change: nothing to patch (derive returns before asking)
+    assert found == (cell, value)
+    further = {**after_cells, other: (after_cells.get(other, 0) + 1) % 256}
+    if other != cell and diff(further) != after:
+        assert one_entry_apart(before, diff(further), start) is None
