@@ -58,92 +58,106 @@ ROOT_ID = -1
 
 def run_search(c, facts, meter, budget) -> Outcome:
     """Depth-first progression from the problem's network; see the module's docstring."""
-    plan: list = []
-    decomps: list = []
-    visited: set = set()
-    choices: list = []      # [alternatives, next, undo mark, len(plan), len(decomps), network node, open]
-    counter = [0]
-    # The compound tasks being decomposed since the last action on this path: one met again
-    # there (same arguments, same state) is cut, which ends left recursion (a method whose
-    # first subtask is its own task again, with other arguments each time).
-    open_tasks = [frozenset()]
-    expanded = generated = 0
-    max_states = budget.max_states
+    return _DepthFirst(c, facts).run(meter, budget.max_states)
 
-    cut = bool(c.goal_atoms)   # goal_reach.py: a network that can no longer add an unmet goal atom
-    task_mask = c.task_mask if cut else (lambda name, args: 0)
 
-    def push(subtasks, rest):
+class _DepthFirst:
+    """The search's path: the plan and decompositions so far, the choice points to
+    backtrack to, and the compound tasks open since the last action."""
+
+    def __init__(self, c, facts):
+        self.c, self.facts = c, facts
+        self.plan: list = []
+        self.decomps: list = []
+        self.choices: list = []   # [alternatives, next, undo mark, len(plan), len(decomps), network node, open]
+        self.counter = 0
+        # The compound tasks being decomposed since the last action on this path: one met
+        # again there (same arguments, same state) is cut, which ends left recursion (a
+        # method whose first subtask is its own task again, with other arguments each time).
+        self.open_tasks = frozenset()
+        self.cut = bool(c.goal_atoms)   # goal_reach.py: a network that can no longer add an unmet goal atom
+        self.task_mask = c.task_mask if self.cut else (lambda name, args: 0)
+
+    def push(self, subtasks, rest):
+        """The network with `subtasks` on top of `rest`, and their new ids."""
         ids = []
         net = rest
+        task_mask = self.task_mask
         for name, args in reversed(subtasks):
-            counter[0] += 1
-            ids.append(counter[0])
-            net = (hash((name, args, net[0] if net else 0)), name, args, counter[0], net,
+            self.counter += 1
+            ids.append(self.counter)
+            net = (hash((name, args, net[0] if net else 0)), name, args, self.counter, net,
                    task_mask(name, args) | (net[5] if net else 0))
         ids.reverse()
         return net, ids
 
-    def take(choice):
+    def take(self, choice):
         """The network after the choice's next alternative, its decomposition recorded."""
         alts, i, _, _, _, node, before = choice
         choice[1] = i + 1
         _, m, subtasks = alts[i]
-        open_tasks[0] = before | {(node[1], node[2])}
-        net, ids = push(subtasks, node[4])
-        decomps.append((node[3], node[1], node[2], m.name, ids))
+        self.open_tasks = before | {(node[1], node[2])}
+        net, ids = self.push(subtasks, node[4])
+        self.decomps.append((node[3], node[1], node[2], m.name, ids))
         return net
 
-    def backtrack():
+    def backtrack(self):
+        """The network after the latest choice point's next alternative (False: none is left)."""
+        choices = self.choices
         while choices:
             choice = choices[-1]
             if choice[1] < len(choice[0]):
-                facts.undo(choice[2])
-                del plan[choice[3]:]
-                del decomps[choice[4]:]
-                return take(choice)
+                self.facts.undo(choice[2])
+                del self.plan[choice[3]:]
+                del self.decomps[choice[4]:]
+                return self.take(choice)
             choices.pop()
         return False
 
-    root = (0, None, (), ROOT_ID, None, 0)   # the problem's network, decomposed by its one "method"
-    alts = c.expansions(None, (), facts)
-    net = False
-    if alts:
-        choices.append([alts, 0, facts.mark(), 0, 0, root, frozenset()])
-        net = take(choices[-1])
-    while net is not False:
-        if net is None:
-            if c.goal_holds(facts):
-                return Outcome("solved", plan, decomps, expanded, generated, len(visited))
-            net = backtrack()
-            continue
-        _, name, args, uid, rest, mask = net
-        if cut and c.unmet(facts) & ~mask:
-            net = backtrack()
-            continue
-        if name in c.actions:
-            if c.apply(name, args, facts):
-                plan.append((uid, name, args))
-                open_tasks[0] = frozenset()
-                net = rest
-            else:
+    def run(self, meter, max_states) -> Outcome:
+        c, facts, plan, choices = self.c, self.facts, self.plan, self.choices
+        take, backtrack, cut = self.take, self.backtrack, self.cut
+        visited: set = set()
+        expanded = generated = 0
+        root = (0, None, (), ROOT_ID, None, 0)   # the problem's network, decomposed by its one "method"
+        alts = c.expansions(None, (), facts)
+        net = False
+        if alts:
+            choices.append([alts, 0, facts.mark(), 0, 0, root, frozenset()])
+            net = take(choices[-1])
+        while net is not False:
+            if net is None:
+                if c.goal_holds(facts):
+                    return Outcome("solved", plan, self.decomps, expanded, generated, len(visited))
                 net = backtrack()
-            continue
-        key = (facts.hash, net[0])
-        if key in visited or (name, args) in open_tasks[0]:
-            net = backtrack()
-            continue
-        visited.add(key)
-        expanded += 1
-        if not expanded & meter.mask or max_states is not None and len(visited) > max_states:
-            which = meter.check(expanded, generated, len(visited))
-            if which:
-                return Outcome("budget", [], [], expanded, generated, len(visited), which)
-        alts = c.expansions(name, args, facts)
-        generated += len(alts)
-        if not alts:
-            net = backtrack()
-            continue
-        choices.append([alts, 0, facts.mark(), len(plan), len(decomps), net, open_tasks[0]])
-        net = take(choices[-1])
-    return Outcome("no_solution", [], [], expanded, generated, len(visited))
+                continue
+            _, name, args, uid, rest, mask = net
+            if cut and c.unmet(facts) & ~mask:
+                net = backtrack()
+                continue
+            if name in c.actions:
+                if c.apply(name, args, facts):
+                    plan.append((uid, name, args))
+                    self.open_tasks = frozenset()
+                    net = rest
+                else:
+                    net = backtrack()
+                continue
+            key = (facts.hash, net[0])
+            if key in visited or (name, args) in self.open_tasks:
+                net = backtrack()
+                continue
+            visited.add(key)
+            expanded += 1
+            if not expanded & meter.mask or max_states is not None and len(visited) > max_states:
+                which = meter.check(expanded, generated, len(visited))
+                if which:
+                    return Outcome("budget", [], [], expanded, generated, len(visited), which)
+            alts = c.expansions(name, args, facts)
+            generated += len(alts)
+            if not alts:
+                net = backtrack()
+                continue
+            choices.append([alts, 0, facts.mark(), len(plan), len(self.decomps), net, self.open_tasks])
+            net = take(choices[-1])
+        return Outcome("no_solution", [], [], expanded, generated, len(visited))
