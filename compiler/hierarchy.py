@@ -167,7 +167,7 @@ class _MethodCompiler:
         conjuncts = []
         for e in pres:
             value = self.g.bool_expr(e.node, Ctx(e, env))
-            conjuncts += _conjuncts(value)
+            conjuncts += ir.conjuncts(value)
         lines, indent = [], "    "
         bound = {env[params[i].name].name for i in values}
         pending = [c for c in conjuncts if not (isinstance(c, ir.Const) and c.value)]
@@ -267,12 +267,6 @@ class _MethodCompiler:
         if index is None:
             raise e.error(f"the action {ground} does not exist in this dungeon", call)
         return f"({index}, ())", (index, ())
-
-
-def _conjuncts(node) -> list:
-    if isinstance(node, ir.BoolOp) and node.op == "and":
-        return [c for item in node.items for c in _conjuncts(item)]
-    return [node]
 
 
 def _free_locals(node) -> set:

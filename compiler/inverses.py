@@ -27,49 +27,29 @@ from __future__ import annotations
 
 import itertools
 
-from . import ir
+from . import access, ir
+from .access import CELLS
 
 MAX_COMBINATIONS = 1 << 12   # value combinations tried per pair, at most
 MAX_COMMUTING = 48           # actions tried for commuting pairs, at most
 
 
-def _reads(node, out: set) -> bool:
-    """Add the variables `node` reads to `out`; False if it reads anything else (a cell,
-    a keyed attribute, a cell loop), whose value the enumeration would not cover."""
-    if isinstance(node, (ir.VarAt, ir.Cell, ir.CellLoop)):
-        return False
-    if isinstance(node, ir.Var):
-        out.add(node.var)
-    return all(_reads(child, out) for child in ir.children(node))
-
-
-def _effects_footprint(effects, writes: set, reads: set) -> bool:
-    for e in effects:
-        if isinstance(e, ir.When):
-            if not (_reads(e.cond, reads) and _effects_footprint(e.then, writes, reads)
-                    and _effects_footprint(e.orelse, writes, reads)):
-                return False
-        elif isinstance(e, ir.SetVar):
-            writes.add(e.var)
-            if not _reads(e.value, reads):
-                return False
-        else:
-            return False
-    return True
+def _access(action) -> tuple[set, set]:
+    """(reads, writes) of a ground action as access.py finds them, every `let` value read
+    (used or not) and locals not followed."""
+    r: set = set()
+    for _, value in action.lets:
+        access.reads(value, acc=r)
+    for cond in action.pre:
+        access.reads(cond, acc=r)
+    return access.effect_access(action.effects, r=r)
 
 
 def footprint(action, layout) -> tuple[frozenset, frozenset] | None:
     """(state indices written, state indices read) of a ground action whose preconditions,
     lets and effects touch fixed variables only; else None."""
-    writes: set = set()
-    reads: set = set()
-    if not all(_reads(value, reads) for _, value in action.lets):
-        return None
-    if not all(_reads(cond, reads) for cond in action.pre):
-        return None
-    if not _effects_footprint(action.effects, writes, reads):
-        return None
-    if not writes or any(v not in layout.by_var for v in writes | reads):
+    reads, writes = _access(action)
+    if not writes or any(not isinstance(v, ir.StateVar) or v not in layout.by_var for v in writes | reads):
         return None
     index = lambda vs: frozenset(layout.by_var[v].index for v in vs)
     return index(writes), index(reads)
@@ -117,52 +97,11 @@ def commute(apply_a, apply_b, slots: list, size: int) -> bool:
     return True
 
 
-CELLS = "cells"   # the grid as one resource: an action reading any cell, one writing any
-
-
-def _uses(node, out: set) -> bool:
-    """Add what `node` reads to `out`: state indices of variables, CELLS for any cell;
-    False for a keyed attribute (its index is chosen at run time and may alias a
-    variable)."""
-    if isinstance(node, ir.VarAt):
-        return False
-    if isinstance(node, (ir.Cell, ir.CellLoop)):
-        out.add(CELLS)
-    if isinstance(node, ir.Var):
-        out.add(node.var)
-    return all(_uses(child, out) for child in ir.children(node))
-
-
-def _effect_uses(effects, writes: set, reads: set) -> bool:
-    for e in effects:
-        if isinstance(e, ir.When):
-            if not (_uses(e.cond, reads) and _effect_uses(e.then, writes, reads)
-                    and _effect_uses(e.orelse, writes, reads)):
-                return False
-        elif isinstance(e, ir.SetVar):
-            writes.add(e.var)
-            if not _uses(e.value, reads):
-                return False
-        elif isinstance(e, ir.SetCell):
-            writes.add(CELLS)
-            if not all(_uses(part, reads) for part in (e.x, e.y, e.z, e.value)):
-                return False
-        else:
-            return False
-    return True
-
-
 def resources(action, layout) -> tuple[frozenset, frozenset] | None:
-    """(written, read) of a ground action: state indices, and CELLS for the grid; None
-    when it touches a keyed attribute."""
-    writes: set = set()
-    reads: set = set()
-    if not all(_uses(value, reads) for _, value in action.lets):
-        return None
-    if not all(_uses(cond, reads) for cond in action.pre):
-        return None
-    if not _effect_uses(action.effects, writes, reads):
-        return None
+    """(written, read) of a ground action: state indices, and CELLS for the grid (one
+    resource: an action reading any cell, one writing any); None when it touches a keyed
+    attribute (its index is chosen at run time and may alias a variable)."""
+    reads, writes = _access(action)
     if any(v != CELLS and v not in layout.by_var for v in writes | reads):
         return None
     index = lambda vs: frozenset(v if v == CELLS else layout.by_var[v].index for v in vs)
