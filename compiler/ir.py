@@ -185,6 +185,22 @@ def children(node) -> tuple:
     return ()
 
 
+def leaf_effects(effects, conditional: bool = False):
+    """Every effect that is not a `When`, those inside conditional ones too, in order:
+    (effect, whether it is conditional)."""
+    for e in effects:
+        if isinstance(e, When):
+            yield from leaf_effects(e.then, True)
+            yield from leaf_effects(e.orelse, True)
+        else:
+            yield e, conditional
+
+
+def set_vars(effects) -> list:
+    """The `SetVar` effects among `leaf_effects`: (SetVar, whether it is unconditional)."""
+    return [(e, not conditional) for e, conditional in leaf_effects(effects) if isinstance(e, SetVar)]
+
+
 def conjuncts(conditions, de_morgan: bool = False) -> list:
     """The conjuncts of a condition (a list or tuple of conditions is their conjunction),
     `and` flattened. With `de_morgan`, `True` is dropped, `not (a or b)` is read as `not a`,

@@ -106,12 +106,8 @@ def _count_writes(effects) -> int:
 
 
 def _moves(effects, axes) -> bool:
-    for e in effects:
-        if isinstance(e, ir.SetVar) and e.var in axes:
-            return True
-        if isinstance(e, ir.When) and (_moves(e.then, axes) or _moves(e.orelse, axes)):
-            return True
-    return False
+    """Whether the effects may write one of the agent's position `axes`."""
+    return any(e.var in axes for e, _ in ir.set_vars(effects))
 
 
 def _displacement(action, lets, axes) -> tuple | None:

@@ -47,7 +47,7 @@ def choose_pattern(layout, actions, position_vars: list, an: Analysis) -> list:
     extra = set()
     for a in actions:
         lets = {loc.name: value for loc, value in a.lets}
-        for e in _top_sets(a.effects):
+        for e, _ in ir.set_vars(a.effects):
             if e.var in pattern:
                 extra |= {v for v in reads(e.value, lets, an.vars_of) if isinstance(v, ir.StateVar)}
     candidate = pattern + sorted(extra - set(pattern), key=lambda v: layout.by_var[v].index)
@@ -64,15 +64,6 @@ def _size(layout, variables) -> int:
     return n
 
 
-def _top_sets(effects):
-    for e in effects:
-        if isinstance(e, ir.When):
-            yield from _top_sets(e.then)
-            yield from _top_sets(e.orelse)
-        elif isinstance(e, ir.SetVar):
-            yield e
-
-
 def build(layout, actions, candidates, goal, reach, n_values, position_vars, initial: bytes) -> PatternDatabase | None:
     an = Analysis(layout, n_values)
     pattern = choose_pattern(layout, [actions[i] for i in candidates], position_vars, an)
@@ -81,7 +72,7 @@ def build(layout, actions, candidates, goal, reach, n_values, position_vars, ini
     slots = [layout.by_var[v] for v in pattern]
     ranges = [range(s.lo, s.hi + 1) for s in slots]
     sizes = [len(r) for r in ranges]
-    movers = [i for i in candidates if any(e.var in pattern for e in _top_sets(actions[i].effects))]
+    movers = [i for i in candidates if any(e.var in pattern for e, _ in ir.set_vars(actions[i].effects))]
     pset = set(pattern)
     # What an action does to a pattern state depends only on the pattern variables it
     # reads (the other sets are fixed): a turn reads the facing alone, so it is evaluated

@@ -78,18 +78,6 @@ def _given(value, var) -> int:
     return 0
 
 
-def _sets(effects):
-    """Every SetVar of these effects, inside conditional ones too: (SetVar, unconditional)."""
-    for e in effects:
-        if isinstance(e, ir.SetVar):
-            yield e, True
-        elif isinstance(e, ir.When):
-            for s, _ in _sets(e.then):
-                yield s, False
-            for s, _ in _sets(e.orelse):
-                yield s, False
-
-
 def wanted(model) -> dict:
     """{var: least value} for the goal's conjuncts that hold a variable at or above a
     constant (`5 <= v`, `v >= 5`, `v > 4`; an upper bound beside it is ignored)."""
@@ -124,7 +112,7 @@ def supplies(model, cells) -> Supplies | None:
     position = set(c.position_vars)
     suppliers, slots, refills = {}, {}, {}
     for index in c.search:
-        effects = list(_sets(c.actions[index].effects))
+        effects = ir.set_vars(c.actions[index].effects)
         for s, always in effects:
             if s.var in position or _taken(s.value, s.var) is not None:
                 continue
@@ -138,7 +126,7 @@ def supplies(model, cells) -> Supplies | None:
     for value, achievers in cells.achievers.items():
         common = None
         for a in achievers:
-            taken = {(s.var, _taken(s.value, s.var)) for s, always in _sets(c.actions[a.action].effects)
+            taken = {(s.var, _taken(s.value, s.var)) for s, always in ir.set_vars(c.actions[a.action].effects)
                      if always and _taken(s.value, s.var) is not None}
             common = taken if common is None else common & taken
         uses[value] = tuple(sorted(common or (), key=lambda t: t[0].label))
