@@ -95,6 +95,8 @@ class _Builder:
         self.strict = True             # atoms that wall others in wait (solvers/access.py)
         self.todo = {}                 # the pending atoms (position -> value), while running
         self.keep = set()              # footing built for the atom in hand (solvers/scaffold.py)
+        self.footing_failed = {}       # scaffold.py: questions of footing that found none
+        self.climbs_failed = set()     # and of climbs
         self.footing = footing(model)  # (offsets the agent stands on, offsets its body takes)
         self.access = Access(cells, self.footing[1], model.grid.default) if self.footing[1] else None
         self.exhausted = {}            # variable -> plan length when no way to raise it was found

@@ -336,3 +336,26 @@ def test_gathering_never_takes_the_footing_in_use(tmp_path):
     b.keep = set()
     steps, why = gather(b, model.initial, short, {})
     assert why == "ok" and b.read(steps[-1][1], 1, 1, 1) == model.grid.default
+
+
+def test_footing_not_found_is_not_looked_for_again(tmp_path):
+    # PERCH: no footing is found for (3, 3, 1) (the agent carries no block, and the one it
+    # stands on is all it could take), and no climb reaches (3, 4, 1) in the air. Asked
+    # again from the same state, with the same footing in use, both answers come from
+    # memory: no state is expanded, and the footing the failed attempt kept is kept again.
+    from bcc.solvers.scaffold import climb, stand_near
+    path = tmp_path / "perch.yaml"
+    path.write_text(PERCH)
+    model = compile_dungeon(str(path))
+    b = builder_of(model)
+    assert stand_near(b, model.initial, [(3, 3, 1)], {}) is None
+    spent, kept = b.expanded, set(b.keep)
+    assert spent > 0
+    b.keep = set()
+    assert stand_near(b, model.initial, [(3, 3, 1)], {}) is None
+    assert b.expanded == spent and b.keep == kept
+    assert climb(b, model.initial, (3, 4, 1), {}) is None
+    spent = b.expanded
+    assert climb(b, model.initial, (3, 4, 1), {}) is None and b.expanded == spent
+    other = b.walk(model.initial, lambda s: [] if s != model.initial else None, 10)[-1][1]
+    assert climb(b, other, (3, 4, 1), {}) is None and b.expanded > spent   # another state: asked anew
