@@ -27,7 +27,7 @@ from ..heuristics.goal_cells import CellReader, footing, goal_cells, lower_bound
 from ..heuristics.supplies import supplies, wanted
 from .access import Access, exit_orders
 from .gather import gather
-from .scaffold import CANDIDATES, make_solid, planned_supports, stand_near, write_cell
+from .scaffold import CANDIDATES, DEEP_DEPTH, MAX_DEPTH, make_solid, planned_supports, stand_near, write_cell
 from ..errors import ModelError
 from .base import Budget, Meter, Result
 from .options import Option, declare
@@ -82,6 +82,7 @@ class _Builder:
         # a drop it cannot climb again (into a room the structure closes) is tried last
         self.returnable = [i for i in self.walkers if shifts[i] is not None and tuple(-d for d in shifts[i]) in back]
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
+        self.footing_depth = DEEP_DEPTH if seed else MAX_DEPTH   # and deeper footing (a taller stair)
         self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
         self.ahead = ahead    # plan supports and exit orders at the start (a try may go without: build_finish.py)
         if self.rng:

@@ -4,7 +4,8 @@ that must rest on something, when no walk reaches a place from which to write a 
 The build solver (solvers/build.py) walks to a *standing place* of the next atom. In a
 domain where the agent stands only on something (heuristics/goal_cells.footing), a place
 in the air is out of reach until its footing is built: a cell made solid, itself written
-from a standing place that may need footing in turn (at most MAX_DEPTH deep: a stair).
+from a standing place that may need footing in turn (at most MAX_DEPTH deep: a stair;
+DEEP_DEPTH in the build solver's tries with other ties: a place ten levels up, say).
 The block used is a *spare* value: one whose supply the pending atoms do not need up to
 what is carried. Nothing here knows what the cells or values mean.
 """
@@ -15,6 +16,7 @@ import functools
 from ..errors import ModelError
 
 MAX_DEPTH = 3
+DEEP_DEPTH = 6      # the footing depth of the tries with other ties (solvers/build_finish.py): a taller stair
 CANDIDATES = 6      # standing places tried, nearest first
 
 
@@ -113,9 +115,11 @@ def _remember_failures(find):
     (the state, the cell or places, the depth, the footing in use, how many atoms are
     achieved and pending) gets the same answer, and the footing the failed attempt kept
     (`b.keep`) is kept again. Looking for a stair asks the same questions many times
-    over (a tree's top log: 840 of 1,045 `make_free` calls were repeats)."""
+    over (a place ten levels up: 840 of 1,045 `make_free` calls were repeats).
+    `depth` left out: the builder's own (`footing_depth`)."""
     @functools.wraps(find)
-    def remembered(b, state, target, todo, depth=MAX_DEPTH):
+    def remembered(b, state, target, todo, depth=None):
+        depth = b.footing_depth if depth is None else depth
         key = (find.__name__, state, frozenset(target) if isinstance(target, (set, list)) else target, depth,
                frozenset(b.keep), len(b.protected), len(todo), b.strict)
         kept = b.footing_failed.get(key)
@@ -131,7 +135,7 @@ def _remember_failures(find):
 
 
 @_remember_failures
-def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
+def make_solid(b, state, cell, todo, depth):
     """A path [(action, state)] after which `cell` holds something (a pending atom's own
     value when it is one, else a spare value, gathered if none is carried), what it rests
     on first, then a standing place (its footing built when no walk reaches one); None if
@@ -189,7 +193,7 @@ def make_solid(b, state, cell, todo, depth=MAX_DEPTH):
 
 
 @_remember_failures
-def make_free(b, state, cell, todo, depth=MAX_DEPTH):
+def make_free(b, state, cell, todo, depth):
     """A path [(action, state)] after which `cell` holds nothing: an achiever of the
     default value (one that does not move the agent) applied from a standing place beside
     it, that place's footing built and its body cleared first when no walk reaches one
@@ -253,7 +257,7 @@ def _changes(b, state, st):
 
 
 @_remember_failures
-def stand_near(b, state, places, todo, depth=MAX_DEPTH):
+def stand_near(b, state, places, todo, depth):
     """A path [(action, state)] that builds the footing of one of `places` and clears its
     body cells (the fewest cells to clear first, then the nearest; at most CANDIDATES
     places tried), so a walk can reach it; None if none is found (a place that needs

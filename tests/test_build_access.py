@@ -359,3 +359,47 @@ def test_footing_not_found_is_not_looked_for_again(tmp_path):
     assert climb(b, model.initial, (3, 4, 1), {}) is None and b.expanded == spent
     other = b.walk(model.initial, lambda s: [] if s != model.initial else None, 10)[-1][1]
     assert climb(b, other, (3, 4, 1), {}) is None and b.expanded > spent   # another state: asked anew
+
+
+STAIR = """\
+dungeon: stair
+domain: builder
+width: 8
+depth: 3
+height: 9
+blocks: |
+  0..7 0 0..2 bedrock
+  0..7 1..8 0 bedrock
+  0..7 1..8 2 bedrock
+  7 1..5 1 bedrock
+  7 6 1 log
+stock:
+  - {name: cobble, kind: cobblestone, count: 20}
+  - {name: logs, kind: log, count: 0}
+agent:
+  start: [0, 1, 1]
+goal: 1 <= logs.count
+"""
+
+
+def test_a_try_with_other_ties_builds_a_taller_stair(tmp_path):
+    # The log tops a pillar at (7, 6, 1) and is broken only from (6, 6, 1) (the corridor's
+    # walls close the other sides). Standing there needs the column (6, 1..5, 1), each
+    # block resting on the one below: footing five deep, which MAX_DEPTH (3) does not
+    # reach; the tries with other ties look DEEP_DEPTH deep, build the column (and the
+    # stair to place its top) and then reach the place
+    from bcc.solvers.build import _Builder
+    from bcc.solvers.scaffold import DEEP_DEPTH, MAX_DEPTH, climb, stand_near
+    assert MAX_DEPTH < 4 <= DEEP_DEPTH
+    path = tmp_path / "stair.yaml"
+    path.write_text(STAIR)
+    model = compile_dungeon(str(path))
+    assert stand_near(builder_of(model), model.initial, [(6, 6, 1)], {}) is None
+    cells = goal_cells(model, allow_empty=True)
+    b = _Builder(model, cells, Meter(Budget(time_limit=60), None), Budget(time_limit=60), 4000, seed=1)
+    steps = stand_near(b, model.initial, [(6, 6, 1)], {})
+    assert steps is not None
+    built = steps[-1][1]
+    assert all(b.read(built, 6, y, 1) != model.grid.default for y in range(1, 6))
+    up = climb(b, built, (6, 6, 1), {})
+    assert up is not None and model.agent_position(up[-1][1]) == (6, 6, 1)
