@@ -47,7 +47,7 @@ def _distance(a, b) -> int:
 
 
 class _Builder:
-    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True, ahead=True):
+    def __init__(self, model, cells, meter, budget, local_limit, seed=0, keep=True, ahead=True, deep=False):
         self.model, self.cells, self.meter, self.budget = model, cells, meter, budget
         self.read = CellReader(model)
         self.succ = model.search_successors()
@@ -82,7 +82,7 @@ class _Builder:
         # a drop it cannot climb again (into a room the structure closes) is tried last
         self.returnable = [i for i in self.walkers if shifts[i] is not None and tuple(-d for d in shifts[i]) in back]
         self.rng = random.Random(seed) if seed else None   # another try: other ties (solvers/build_finish.py)
-        self.footing_depth = DEEP_DEPTH if seed else MAX_DEPTH   # and deeper footing (a taller stair)
+        self.footing_depth = DEEP_DEPTH if deep else MAX_DEPTH   # scaffold.py: how deep footing is looked for
         self.reserve = keep   # searches keep what the pending atoms take (a try may go without: build_finish.py)
         self.ahead = ahead    # plan supports and exit orders at the start (a try may go without: build_finish.py)
         if self.rng:
@@ -588,7 +588,7 @@ def solve(model, budget: Budget, progress=None, local_limit: int = 4000, improve
     never = goal_never_holds(model)
     if never:   # a relaxation proves it (also asked by the run path; a library caller gets it here)
         return meter.finish(Result(solver=NAME, solved=False, status="no_solution", message=never))
-    run = serialise(model, lambda seed, keep, ahead, try_meter: _Builder(model, cells, try_meter, budget, local_limit,
-                                                                         seed, keep, ahead),
+    run = serialise(model, lambda seed, keep, ahead, deep, try_meter: _Builder(model, cells, try_meter, budget,
+                                                                               local_limit, seed, keep, ahead, deep),
                     meter, budget)
     return finish(model, budget, meter, run, improve, progress)

@@ -14,8 +14,10 @@ short of the goal, and the shorter plan made of what it found.
   search spends it, on scaffolding say: a world holding just the blocks its top needs),
   the third does not (a structure whose scaffolds must borrow the blocks it is made of,
   and give them back), the others keep it, with other ties (their walks' action order
-  shuffled by a seed). Each try but the first and the last may take half the time left:
-  one way that grinds cannot starve the others.
+  shuffled by a seed); the last also looks for footing deeper (solvers/scaffold.py
+  DEEP_DEPTH: a stair to a place ten levels up), which the others do not, as it costs
+  time where a shallow footing does. Each try but the first and the last may take half
+  the time left: one way that grinds cannot starve the others.
 - **The fallback rule** (`search_may_help`, the one place of it). gbfs gets what is left
   of the budget from the state reached only where a search may help: the goal has a
   conjunct other than cell atoms and amounts to gather (which the builder does not
@@ -36,8 +38,9 @@ from .base import Budget, Result, budget_result
 from .shorten import eliminate
 
 NAME = "build"
-TRIES = ((0, True, True), (0, True, False), (0, False, False), (1, True, False), (2, True, False), (3, True, False))
-# (seed of the ties, keep, plan ahead) of each try
+TRIES = ((0, True, True, False), (0, True, False, False), (0, False, False, False), (1, True, False, False),
+         (2, True, False, False), (3, True, False, False), (1, True, False, True))
+# (seed of the ties, keep, plan ahead, deep footing) of each try
 AHEAD_SHARE = 4         # the try that plans ahead may take 1/AHEAD_SHARE of the time left
 FALLBACK_UP_TO = 3      # atoms left (and no amount short) for which the gbfs fallback still runs
 SHORTEN_UP_TO = 600     # plans this short go through action elimination (solvers/shorten.py)
@@ -121,11 +124,11 @@ def serialise(model, make_builder, meter, budget: Budget) -> Run:
     one that left the fewest atoms. Its stats count every try."""
     from ..heuristics.goal_cells import lower_bound
     best, stats = None, dict(expanded=0, generated=0, stored=0)
-    for k, (seed, keep, ahead) in enumerate(TRIES):
+    for k, (seed, keep, ahead, deep) in enumerate(TRIES):
         until = None
         if budget.time_limit is not None and k < len(TRIES) - 1:
             until = meter.elapsed() + max(0.0, budget.time_limit - meter.elapsed()) / (AHEAD_SHARE if ahead else 2)
-        builder = make_builder(seed, keep, ahead, _TryMeter(meter, until))
+        builder = make_builder(seed, keep, ahead, deep, _TryMeter(meter, until))
         if ahead and not builder.plans_ahead(model.initial):
             continue
         if best is None:

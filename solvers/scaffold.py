@@ -5,7 +5,7 @@ The build solver (solvers/build.py) walks to a *standing place* of the next atom
 domain where the agent stands only on something (heuristics/goal_cells.footing), a place
 in the air is out of reach until its footing is built: a cell made solid, itself written
 from a standing place that may need footing in turn (at most MAX_DEPTH deep: a stair;
-DEEP_DEPTH in the build solver's tries with other ties: a place ten levels up, say).
+DEEP_DEPTH in the build solver's last try: a place ten levels up, say).
 The block used is a *spare* value: one whose supply the pending atoms do not need up to
 what is carried. Nothing here knows what the cells or values mean.
 """
@@ -16,7 +16,7 @@ import functools
 from ..errors import ModelError
 
 MAX_DEPTH = 3
-DEEP_DEPTH = 6      # the footing depth of the tries with other ties (solvers/build_finish.py): a taller stair
+DEEP_DEPTH = 6      # the footing depth of the build solver's last try (solvers/build_finish.py): a taller stair
 CANDIDATES = 6      # standing places tried, nearest first
 
 

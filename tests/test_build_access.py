@@ -382,12 +382,12 @@ goal: 1 <= logs.count
 """
 
 
-def test_a_try_with_other_ties_builds_a_taller_stair(tmp_path):
+def test_the_deep_try_builds_a_taller_stair(tmp_path):
     # The log tops a pillar at (7, 6, 1) and is broken only from (6, 6, 1) (the corridor's
     # walls close the other sides). Standing there needs the column (6, 1..5, 1), each
     # block resting on the one below: footing five deep, which MAX_DEPTH (3) does not
-    # reach; the tries with other ties look DEEP_DEPTH deep, build the column (and the
-    # stair to place its top) and then reach the place
+    # reach; the build solver's deep try looks DEEP_DEPTH deep, builds the column (and
+    # the stair to place its top) and then reaches the place
     from bcc.solvers.build import _Builder
     from bcc.solvers.scaffold import DEEP_DEPTH, MAX_DEPTH, climb, stand_near
     assert MAX_DEPTH < 4 <= DEEP_DEPTH
@@ -396,7 +396,7 @@ def test_a_try_with_other_ties_builds_a_taller_stair(tmp_path):
     model = compile_dungeon(str(path))
     assert stand_near(builder_of(model), model.initial, [(6, 6, 1)], {}) is None
     cells = goal_cells(model, allow_empty=True)
-    b = _Builder(model, cells, Meter(Budget(time_limit=60), None), Budget(time_limit=60), 4000, seed=1)
+    b = _Builder(model, cells, Meter(Budget(time_limit=60), None), Budget(time_limit=60), 4000, deep=True)
     steps = stand_near(b, model.initial, [(6, 6, 1)], {})
     assert steps is not None
     built = steps[-1][1]
